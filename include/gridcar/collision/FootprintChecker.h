@@ -1,0 +1,124 @@
+#pragma once
+/// @file FootprintChecker.h
+/// @brief Body-contour collision checking of a vehicle rectangle on an occupancy grid (FCL).
+
+#include "gridcar/collision/VehicleParams.h"
+#include "gridcar/distance/DistanceField.h"
+#include "gridcar/map/OccupancyGrid.h"
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace fcl
+{
+template <typename S>
+class BroadPhaseCollisionManager;
+template <typename S>
+class CollisionObject;
+}  // namespace fcl
+
+namespace gridcar
+{
+/// A pose of the vehicle's reference point (rear-axle centre): world x, y (m), yaw (rad).
+struct Pose2
+{
+    double x{0}, y{0}, yaw{0};
+};
+
+/**
+ * @brief Exact collision checking of the vehicle rectangle against the blocked cells of a map.
+ *
+ * Semantics: a pose is in collision when the closed vehicle rectangle and the closed square of
+ * some blocked cell (occupied, or unknown unless unknown is free, or outside the map) overlap.
+ * (Poses whose rectangle only touches a cell edge within floating-point precision may go
+ * either way.)
+ *
+ * isValid() first asks the DistanceField about the cell under the rectangle's centre: with
+ * h = resolution * sqrt(2) / 2, it is free if d_O - 2h > circumscribed radius, and in collision
+ * if d_O + h < inscribed radius (or the centre's cell is blocked). Otherwise an exact FCL test
+ * runs: the vehicle box against the map's obstacle boundary cells, merged into rectangles (runs
+ * along rows, then stacked runs of equal extent) and held in an FCL dynamic AABB tree, plus four
+ * boxes that wall off the outside of the map. A rectangle wholly inside an obstacle has its centre
+ * on a blocked cell, which the fast path catches, so boundary cells suffice.
+ *
+ * The "point" vehicle checks only the cell under the point.
+ *
+ * @par External documentation
+ * J. Pan, S. Chitta, D. Manocha, FCL: A General Purpose Library for Collision and Proximity
+ * Queries, ICRA 2012. Paper I (Yao et al. 2020), section 3.3, body-contour cost s(n).
+ */
+class FootprintChecker
+{
+public:
+    FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, std::shared_ptr<const DistanceField> field,
+                     const VehicleParams &vehicle);
+    ~FootprintChecker();
+    FootprintChecker(const FootprintChecker &) = delete;
+    FootprintChecker &operator=(const FootprintChecker &) = delete;
+
+    const VehicleParams &vehicle() const { return vehicle_; }
+    const OccupancyGrid &grid() const { return *grid_; }
+    const DistanceField &field() const { return *field_; }
+    std::shared_ptr<const OccupancyGrid> gridPtr() const { return grid_; }
+    std::shared_ptr<const DistanceField> fieldPtr() const { return field_; }
+
+    /// True if the vehicle rectangle at the pose overlaps no blocked cell. NaN/inf: false.
+    bool isValid(double x, double y, double yaw) const;
+    bool isValid(const Pose2 &p) const { return isValid(p.x, p.y, p.yaw); }
+    /// The exact FCL test alone, no distance-field shortcut (for tests and benchmarks).
+    bool isValidExact(double x, double y, double yaw) const;
+
+    /**
+     * @brief Swept check: the straight motion from @p a to @p b (yaw along the shorter way) is
+     * valid if the footprint is free at poses spaced so that no point of the rectangle moves
+     * more than sweepFraction() * resolution between two checks (both ends included).
+     */
+    bool isMotionValid(const Pose2 &a, const Pose2 &b) const;
+    double sweepFraction() const { return sweepFraction_; }
+    void setSweepFraction(double f);
+    /// Number of poses isMotionValid() checks for this motion.
+    int sweepSteps(const Pose2 &a, const Pose2 &b) const;
+
+    /**
+     * @brief Clearance of the footprint (m): the smallest obstacle distance d_O (bilinear,
+     * centre-to-centre, see DistanceField) over points spaced half a cell apart along the
+     * rectangle's outline; 0 if the pose is in collision. Accurate to about one cell
+     * (the distance to a cell's boundary is up to h less than to its centre).
+     */
+    double clearance(double x, double y, double yaw) const;
+
+    /**
+     * @brief Paper I's detection-point contour check: the node and points on a circle of radius
+     * D/2 (half the vehicle width) around it every 45 degrees; valid if none is on a blocked
+     * cell. Cheaper than the rectangle, and blind to the vehicle's length.
+     */
+    bool isValidDetectionPoints(double x, double y) const;
+
+    /// Corners of the rectangle at a pose (counter-clockwise from rear-right).
+    void corners(double x, double y, double yaw, double cx[4], double cy[4]) const;
+
+    /// Counters of which path isValid() took (relaxed atomics; for benchmarks and tests).
+    struct Stats
+    {
+        std::uint64_t fastFree{0}, fastCollision{0}, exact{0};
+    };
+    Stats stats() const;
+    std::size_t obstacleBoxCount() const { return boxCount_; }
+
+private:
+    bool cellBlockedAt(double x, double y) const;
+
+    std::shared_ptr<const OccupancyGrid> grid_;
+    std::shared_ptr<const DistanceField> field_;
+    VehicleParams vehicle_;
+    double rIn_{0}, rOut_{0}, halfDiag_{0};
+    double sweepFraction_{0.5};
+    std::size_t boxCount_{0};
+    std::unique_ptr<fcl::BroadPhaseCollisionManager<double>> manager_;
+    std::vector<std::unique_ptr<fcl::CollisionObject<double>>> objects_;
+    mutable std::atomic<std::uint64_t> nFastFree_{0}, nFastCollision_{0}, nExact_{0};
+};
+
+}  // namespace gridcar

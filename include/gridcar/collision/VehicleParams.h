@@ -1,0 +1,61 @@
+#pragma once
+/// @file VehicleParams.h
+/// @brief Vehicle geometry and dynamics limits, with the papers' presets.
+
+#include <string>
+#include <vector>
+
+namespace gridcar
+{
+/**
+ * @brief A car-like vehicle: a rectangle whose reference point is the rear-axle centre, plus
+ * the kinematic and dynamic limits the planners, objectives and simulator use.
+ *
+ * Body frame: x forward, y left. The rectangle spans x in [-rearOverhang, length - rearOverhang]
+ * and y in [-width/2, width/2]. A vehicle with length == 0 and width == 0 is a point (plain
+ * grid semantics: valid iff the cell under the point is free).
+ */
+struct VehicleParams
+{
+    std::string name{"custom"};
+    double length{4.5};            ///< m, bumper to bumper
+    double width{1.8};             ///< m
+    double wheelbase{2.7};         ///< m, rear to front axle
+    double rearOverhang{0.9};      ///< m, rear bumper to rear axle (the reference point)
+    double maxSteerDeg{35.0};      ///< deg, maximum front-wheel steering angle phi_max
+    double maxSteerRateDeg{60.0};  ///< deg/s
+    double maxSpeed{10.0};         ///< m/s
+    double acceleration{2.0};      ///< m/s^2
+    double deceleration{3.0};      ///< m/s^2 (positive number)
+    double maxLateralAccel{2.0};   ///< m/s^2, sets cornering speed v = sqrt(a_lat r)
+    double friction{0.7};          ///< tyre-road friction mu (v_max,corner = sqrt(mu g r))
+    /// Optional recommended corner speeds for 45/90/135-degree grid corners (m/s); 0 = derive
+    /// from the minimum turning radius and maxLateralAccel.
+    double cornerSpeed45{0.0};
+    double cornerSpeed90{0.0};
+    double cornerSpeed135{0.0};
+
+    bool isPoint() const { return length <= 0.0 && width <= 0.0; }
+    /// K_max = tan(phi_max) / wheelbase (paper I eq. 2), 1/m; +inf for a point vehicle.
+    double maxCurvature() const;
+    /// R_min = 1 / K_max, m.
+    double minTurningRadius() const;
+    /// Distance from the reference point to the rectangle's centre along x.
+    double centreOffset() const { return length / 2.0 - rearOverhang; }
+    /// Radius of the circle around the centre that contains the rectangle.
+    double circumscribedRadius() const;
+    /// Radius of the largest circle around the centre inside the rectangle.
+    double inscribedRadius() const;
+
+    /// Throws std::invalid_argument naming the first field that is negative, NaN or inconsistent.
+    void validate() const;
+
+    /// Named presets: paper-i, paper-c-car, paper-c-robot, point.
+    static VehicleParams preset(const std::string &name);
+    static std::vector<std::string> presetNames();
+    /// A preset name, or a YAML file with the same field names (snake_case, see docs).
+    /// Throws std::invalid_argument (unknown preset) or MapLoadError (bad file).
+    static VehicleParams fromNameOrFile(const std::string &nameOrPath);
+};
+
+}  // namespace gridcar

@@ -1,0 +1,104 @@
+#pragma once
+/// @file DistanceField.h
+/// @brief Exact Euclidean distance transform, generalized Voronoi diagram and Voronoi field.
+
+#include "gridcar/map/OccupancyGrid.h"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace gridcar
+{
+/// Parameters of Dolgov et al.'s Voronoi field.
+struct VoronoiFieldParams
+{
+    double alpha{2.0};      ///< falloff rate, metres
+    double dOMax{5.0};      ///< obstacle influence distance d_O^max, metres
+};
+
+/**
+ * @brief Obstacle distance d_O and Voronoi distance d_V of every cell of a grid.
+ *
+ * d_O is the exact Euclidean distance, in metres, from a cell's CENTRE to the CENTRE of the
+ * nearest blocked cell (OccupancyGrid::isBlocked(): occupied, or unknown unless unknown is
+ * free). The map border counts as an obstacle: a ring of blocked cells just outside the map.
+ * Blocked cells have d_O = 0. The transform is Felzenszwalb & Huttenlocher's lower envelope of
+ * parabolas ("Distance Transforms of Sampled Functions", 2012), linear in the number of cells,
+ * after a linear column pass; it also records each cell's nearest obstacle cell.
+ *
+ * The generalized Voronoi diagram (GVD) is the set of free cells where the nearest obstacle
+ * changes between 4-neighbours in a way that is not a step along one wall: either the two
+ * nearest obstacle cells belong to different obstacles (8-connected components of blocked
+ * cells; the border and everything touching it is one obstacle), or they are more than
+ * voronoiSeparationCells apart (medial axis inside one U-shaped obstacle, e.g. a corridor whose
+ * walls join). Of each such pair the cell farther from its obstacle (ties: lower index) is
+ * marked, giving a one-cell-thin diagram. d_V is the exact distance from a cell centre to the
+ * nearest GVD cell centre (+infinity when the map has no GVD cell).
+ *
+ * Values between cell centres are bilinear (distance(), gradient()); points outside the map
+ * have distance 0.
+ *
+ * @par External documentation
+ * P. Felzenszwalb, D. Huttenlocher, Distance Transforms of Sampled Functions, Theory of
+ * Computing 8, 2012. D. Dolgov, S. Thrun, M. Montemerlo, J. Diebel, Path Planning for
+ * Autonomous Vehicles in Unknown Semi-structured Environments, IJRR 29(5), 2010 (Voronoi field).
+ * Paper I (Yao et al. 2020), eq. 8: o(n) = delta / d_min from a Voronoi / distance map.
+ */
+class DistanceField
+{
+public:
+    /// Cells whose nearest obstacles are farther apart than this (in cells) mark the GVD.
+    static constexpr double voronoiSeparationCells = 3.0;
+
+    /// Computes both fields for @p grid (the grid is copied by reference into metadata only).
+    explicit DistanceField(const OccupancyGrid &grid);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    double resolution() const { return resolution_; }
+
+    /// d_O at cell centre, metres (0 for blocked cells; 0 off the map).
+    double cellDistance(int col, int row) const
+    {
+        return (col < 0 || row < 0 || col >= width_ || row >= height_) ? 0.0 : double(dist_[idx(col, row)]);
+    }
+    /// d_V at cell centre, metres (+inf if there is no GVD; +inf off the map).
+    double cellVoronoiDistance(int col, int row) const
+    {
+        return (col < 0 || row < 0 || col >= width_ || row >= height_) ? std::numeric_limits<double>::infinity() :
+                                                                          double(vdist_[idx(col, row)]);
+    }
+    bool isVoronoi(int col, int row) const { return voronoi_[idx(col, row)] != 0; }
+    std::size_t voronoiCellCount() const { return voronoiCount_; }
+    /// Largest d_O over the map, metres.
+    double maxDistance() const { return maxDist_; }
+
+    /// Bilinear d_O at world point (x, y), metres.
+    double distance(double x, double y) const;
+    /// Gradient of the bilinear d_O at (x, y) (metres per metre); 0 off the map.
+    void gradient(double x, double y, double &gx, double &gy) const;
+    /// d_V at the cell containing (x, y).
+    double voronoiDistance(double x, double y) const;
+
+    /**
+     * @brief Dolgov's Voronoi field at (x, y), in [0, 1]:
+     * rho_V = (alpha / (alpha + d_O)) (d_V / (d_O + d_V)) ((d_O - d_O^max)^2 / (d_O^max)^2) for
+     * d_O <= d_O^max, else 0; with d_V = inf the middle factor is 1. 1 inside obstacles.
+     */
+    double voronoiField(double x, double y, const VoronoiFieldParams &p = VoronoiFieldParams()) const;
+
+private:
+    std::size_t idx(int col, int row) const { return std::size_t(row) * std::size_t(width_) + std::size_t(col); }
+
+    int width_{0}, height_{0};
+    double resolution_{1.0};
+    double originX_{0}, originY_{0};
+    double maxDist_{0};
+    std::size_t voronoiCount_{0};
+    std::vector<float> dist_;            ///< d_O per cell, metres
+    std::vector<float> vdist_;           ///< d_V per cell, metres
+    std::vector<std::uint8_t> voronoi_;  ///< 1 on GVD cells
+};
+
+}  // namespace gridcar

@@ -1,0 +1,116 @@
+#pragma once
+/// @file OccupancyGrid.h
+/// @brief Occupancy grid in the ROS map_server convention.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gridcar
+{
+/// State of one grid cell as read from a map file.
+enum class CellState : std::uint8_t
+{
+    Free = 0,
+    Occupied = 1,
+    Unknown = 2
+};
+
+/// Integer cell coordinate: column (x to the right) and row (row 0 is the TOP image row).
+struct Cell
+{
+    int col{0};
+    int row{0};
+    bool operator==(const Cell &o) const { return col == o.col && row == o.row; }
+    bool operator!=(const Cell &o) const { return !(*this == o); }
+};
+
+/// Largest number of cells a map may have (about 1.1 GB of cell data would be absurd for a
+/// planner on this project's machines); readers refuse bigger headers before allocating.
+constexpr std::size_t kMaxMapCells = std::size_t(1) << 28;  // 268 M cells, e.g. 16384 x 16384
+
+/**
+ * @brief A 2D occupancy grid: width x height cells of `resolution` metres.
+ *
+ * Conventions (ROS map_server): cell (col, row) with row 0 at the TOP of the image;
+ * the world frame has x to the right and y up, and `origin` is the world pose of the
+ * lower-left corner of the lower-left cell (col 0, row height-1). The origin yaw is stored
+ * and reported but, like ROS costmap_2d, ignored by the conversions (yaw != 0 maps are
+ * treated as axis-aligned). Cell centres are at half-integer multiples of the resolution.
+ *
+ * Cells keep the state they were read with (free / occupied / unknown). For planning,
+ * isBlocked() treats unknown as occupied unless setUnknownIsFree(true).
+ */
+class OccupancyGrid
+{
+public:
+    OccupancyGrid() = default;
+    /// Creates a width x height grid filled with @p fill. Throws std::invalid_argument for
+    /// non-positive or absurd sizes or a non-positive / non-finite resolution.
+    OccupancyGrid(int width, int height, double resolution, CellState fill = CellState::Free);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    std::size_t size() const { return cells_.size(); }
+    double resolution() const { return resolution_; }
+    double originX() const { return originX_; }
+    double originY() const { return originY_; }
+    double originYaw() const { return originYaw_; }
+    /// Sets the world pose of the lower-left corner (yaw stored, not applied).
+    void setOrigin(double x, double y, double yaw = 0.0);
+
+    bool inBounds(int col, int row) const { return col >= 0 && row >= 0 && col < width_ && row < height_; }
+    std::size_t index(int col, int row) const { return std::size_t(row) * std::size_t(width_) + std::size_t(col); }
+
+    CellState at(int col, int row) const { return cells_[index(col, row)]; }
+    void set(int col, int row, CellState s) { cells_[index(col, row)] = s; }
+    const std::vector<CellState> &cells() const { return cells_; }
+    std::vector<CellState> &cells() { return cells_; }
+
+    /// Blocked for planning: occupied, unknown (unless unknown counts as free), or off the map.
+    bool isBlocked(int col, int row) const
+    {
+        if (!inBounds(col, row)) return true;
+        const CellState s = cells_[index(col, row)];
+        return s == CellState::Occupied || (s == CellState::Unknown && !unknownIsFree_);
+    }
+    bool unknownIsFree() const { return unknownIsFree_; }
+    void setUnknownIsFree(bool v) { unknownIsFree_ = v; }
+
+    /// World x of the centre of column @p col.
+    double cellCenterX(int col) const { return originX_ + (col + 0.5) * resolution_; }
+    /// World y of the centre of row @p row (row 0 is the top).
+    double cellCenterY(int row) const { return originY_ + (height_ - row - 0.5) * resolution_; }
+    /// The cell that contains world point (x, y) (may be out of bounds; check inBounds()).
+    Cell worldToCell(double x, double y) const;
+    /// Continuous "map frame" coordinates: u = (x - ox) / res, v = (y - oy) / res (cells, y up).
+    double worldToMapU(double x) const { return (x - originX_) / resolution_; }
+    double worldToMapV(double y) const { return (y - originY_) / resolution_; }
+
+    /// World extent.
+    double sizeX() const { return width_ * resolution_; }
+    double sizeY() const { return height_ * resolution_; }
+
+    struct Counts
+    {
+        std::size_t free{0}, occupied{0}, unknown{0};
+    };
+    /// Cell counts by state as stored (unknown is not merged into occupied).
+    Counts counts() const;
+
+    /// A copy resampled to @p newResolution (metres/cell): a new cell is blocked if any source
+    /// cell it overlaps is occupied, unknown if any is unknown and none occupied, else free
+    /// (conservative for planning).
+    OccupancyGrid resampled(double newResolution) const;
+
+private:
+    int width_{0};
+    int height_{0};
+    double resolution_{1.0};
+    double originX_{0.0}, originY_{0.0}, originYaw_{0.0};
+    bool unknownIsFree_{false};
+    std::vector<CellState> cells_;
+};
+
+}  // namespace gridcar

@@ -1,0 +1,245 @@
+#include "gridcar/collision/FootprintChecker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/broadphase/default_broadphase_callbacks.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/collision_object.h>
+
+namespace gridcar
+{
+namespace
+{
+std::unique_ptr<fcl::CollisionObjectd> makeBox(double cx, double cy, double sx, double sy, double yaw = 0.0)
+{
+    auto geom = std::make_shared<fcl::Boxd>(sx, sy, 1.0);
+    fcl::Transform3d tf = fcl::Transform3d::Identity();
+    tf.translation() = fcl::Vector3d(cx, cy, 0.0);
+    tf.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    return std::make_unique<fcl::CollisionObjectd>(geom, tf);
+}
+}  // namespace
+
+FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, std::shared_ptr<const DistanceField> field,
+                                   const VehicleParams &vehicle)
+  : grid_(std::move(grid)), field_(std::move(field)), vehicle_(vehicle)
+{
+    if (!grid_ || !field_) throw std::invalid_argument("FootprintChecker needs a grid and a distance field");
+    if (field_->width() != grid_->width() || field_->height() != grid_->height())
+        throw std::invalid_argument("FootprintChecker: distance field does not match the grid");
+    vehicle_.validate();
+    rIn_ = vehicle_.inscribedRadius();
+    rOut_ = vehicle_.circumscribedRadius();
+    halfDiag_ = grid_->resolution() * std::sqrt(2.0) / 2.0;
+    if (vehicle_.isPoint()) return;
+
+    // Obstacle boundary cells: blocked cells with a non-blocked 4-neighbour inside the map.
+    const OccupancyGrid &g = *grid_;
+    const int W = g.width(), H = g.height();
+    auto boundary = [&](int c, int r) {
+        if (!g.isBlocked(c, r)) return false;
+        return (c > 0 && !g.isBlocked(c - 1, r)) || (c + 1 < W && !g.isBlocked(c + 1, r)) ||
+               (r > 0 && !g.isBlocked(c, r - 1)) || (r + 1 < H && !g.isBlocked(c, r + 1));
+    };
+    struct Run
+    {
+        int c0, c1, r0, r1;
+    };
+    std::vector<Run> done, open;  // open: runs that may still grow downwards
+    for (int r = 0; r < H; ++r)
+    {
+        std::vector<Run> rowRuns;
+        for (int c = 0; c < W;)
+        {
+            if (!boundary(c, r))
+            {
+                ++c;
+                continue;
+            }
+            int e = c;
+            while (e + 1 < W && boundary(e + 1, r)) ++e;
+            rowRuns.push_back({c, e, r, r});
+            c = e + 1;
+        }
+        // merge with open runs of the same extent ending on the previous row (both sorted by c0)
+        std::vector<Run> next;
+        std::size_t k = 0;
+        for (Run &rr : rowRuns)
+        {
+            while (k < open.size() && open[k].c0 < rr.c0) done.push_back(open[k++]);
+            if (k < open.size() && open[k].c0 == rr.c0 && open[k].c1 == rr.c1)
+            {
+                Run m = open[k++];
+                m.r1 = r;
+                next.push_back(m);
+            }
+            else
+                next.push_back(rr);
+        }
+        while (k < open.size()) done.push_back(open[k++]);
+        open.swap(next);
+    }
+    done.insert(done.end(), open.begin(), open.end());
+
+    const double res = g.resolution();
+    for (const Run &run : done)
+    {
+        const double x0 = g.originX() + run.c0 * res, x1 = g.originX() + (run.c1 + 1) * res;
+        const double yTop = g.cellCenterY(run.r0) + res / 2, yBot = g.cellCenterY(run.r1) - res / 2;
+        objects_.push_back(makeBox((x0 + x1) / 2, (yTop + yBot) / 2, x1 - x0, yTop - yBot));
+    }
+    boxCount_ = objects_.size();
+    // walls around the map, thick enough that no footprint can reach past them
+    const double t = 2.0 * rOut_ + 1.0;
+    const double mx0 = g.originX(), my0 = g.originY(), mx1 = mx0 + g.sizeX(), my1 = my0 + g.sizeY();
+    objects_.push_back(makeBox(mx0 - t / 2, (my0 + my1) / 2, t, g.sizeY() + 2 * t));
+    objects_.push_back(makeBox(mx1 + t / 2, (my0 + my1) / 2, t, g.sizeY() + 2 * t));
+    objects_.push_back(makeBox((mx0 + mx1) / 2, my0 - t / 2, g.sizeX() + 2 * t, t));
+    objects_.push_back(makeBox((mx0 + mx1) / 2, my1 + t / 2, g.sizeX() + 2 * t, t));
+
+    manager_ = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
+    std::vector<fcl::CollisionObjectd *> raw;
+    raw.reserve(objects_.size());
+    for (auto &o : objects_) raw.push_back(o.get());
+    manager_->registerObjects(raw);
+    manager_->setup();
+}
+
+FootprintChecker::~FootprintChecker() = default;
+
+bool FootprintChecker::cellBlockedAt(double x, double y) const
+{
+    const Cell c = grid_->worldToCell(x, y);
+    return grid_->isBlocked(c.col, c.row);
+}
+
+void FootprintChecker::corners(double x, double y, double yaw, double cx[4], double cy[4]) const
+{
+    const double c = std::cos(yaw), s = std::sin(yaw);
+    const double xr = -vehicle_.rearOverhang, xf = vehicle_.length - vehicle_.rearOverhang, hw = vehicle_.width / 2;
+    const double bx[4] = {xr, xf, xf, xr}, by[4] = {-hw, -hw, hw, hw};
+    for (int i = 0; i < 4; ++i)
+    {
+        cx[i] = x + c * bx[i] - s * by[i];
+        cy[i] = y + s * bx[i] + c * by[i];
+    }
+}
+
+bool FootprintChecker::isValidExact(double x, double y, double yaw) const
+{
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
+    if (vehicle_.isPoint()) return !cellBlockedAt(x, y);
+    const double off = vehicle_.centreOffset();
+    const double cxw = x + off * std::cos(yaw), cyw = y + off * std::sin(yaw);
+    if (cellBlockedAt(cxw, cyw)) return false;  // centre inside an obstacle or off the map
+    auto body = makeBox(cxw, cyw, vehicle_.length, vehicle_.width, yaw);
+    fcl::DefaultCollisionData<double> data;
+    manager_->collide(body.get(), &data, fcl::DefaultCollisionFunction<double>);
+    return !data.result.isCollision();
+}
+
+bool FootprintChecker::isValid(double x, double y, double yaw) const
+{
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
+    if (vehicle_.isPoint()) return !cellBlockedAt(x, y);
+    const double off = vehicle_.centreOffset();
+    const double cxw = x + off * std::cos(yaw), cyw = y + off * std::sin(yaw);
+    const Cell c = grid_->worldToCell(cxw, cyw);
+    if (grid_->isBlocked(c.col, c.row))
+    {
+        nFastCollision_.fetch_add(1, std::memory_order_relaxed);
+        return false;
+    }
+    const double d = field_->cellDistance(c.col, c.row);
+    if (d - 2.0 * halfDiag_ > rOut_)
+    {
+        nFastFree_.fetch_add(1, std::memory_order_relaxed);
+        return true;
+    }
+    if (d + halfDiag_ < rIn_)
+    {
+        nFastCollision_.fetch_add(1, std::memory_order_relaxed);
+        return false;
+    }
+    nExact_.fetch_add(1, std::memory_order_relaxed);
+    return isValidExact(x, y, yaw);
+}
+
+void FootprintChecker::setSweepFraction(double f)
+{
+    if (!(f > 0.0 && f <= 1.0)) throw std::invalid_argument("sweep fraction must be in (0, 1]");
+    sweepFraction_ = f;
+}
+
+int FootprintChecker::sweepSteps(const Pose2 &a, const Pose2 &b) const
+{
+    double dyaw = std::remainder(b.yaw - a.yaw, 2.0 * M_PI);
+    // farthest point of the rectangle from the reference point
+    const double reach = vehicle_.isPoint() ? 0.0 :
+                                              std::hypot(std::max(vehicle_.rearOverhang, vehicle_.length - vehicle_.rearOverhang),
+                                                         vehicle_.width / 2);
+    const double travel = std::hypot(b.x - a.x, b.y - a.y) + std::abs(dyaw) * reach;
+    const double step = sweepFraction_ * grid_->resolution();
+    if (!std::isfinite(travel)) return -1;
+    return std::max(1, int(std::ceil(travel / step)));
+}
+
+bool FootprintChecker::isMotionValid(const Pose2 &a, const Pose2 &b) const
+{
+    const int n = sweepSteps(a, b);
+    if (n < 0 || n > 10000000) return false;
+    const double dyaw = std::remainder(b.yaw - a.yaw, 2.0 * M_PI);
+    if (!isValid(b)) return false;
+    for (int i = 0; i < n; ++i)
+    {
+        const double t = double(i) / n;
+        if (!isValid(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.yaw + t * dyaw)) return false;
+    }
+    return true;
+}
+
+double FootprintChecker::clearance(double x, double y, double yaw) const
+{
+    if (!isValid(x, y, yaw)) return 0.0;
+    if (vehicle_.isPoint()) return field_->distance(x, y);
+    double cx[4], cy[4];
+    corners(x, y, yaw, cx, cy);
+    double best = std::numeric_limits<double>::infinity();
+    const double step = grid_->resolution() / 2;
+    for (int e = 0; e < 4; ++e)
+    {
+        const double x0 = cx[e], y0 = cy[e], x1 = cx[(e + 1) % 4], y1 = cy[(e + 1) % 4];
+        const int n = std::max(1, int(std::ceil(std::hypot(x1 - x0, y1 - y0) / step)));
+        for (int i = 0; i < n; ++i)
+        {
+            const double t = double(i) / n;
+            best = std::min(best, field_->distance(x0 + t * (x1 - x0), y0 + t * (y1 - y0)));
+        }
+    }
+    return best;
+}
+
+bool FootprintChecker::isValidDetectionPoints(double x, double y) const
+{
+    if (!std::isfinite(x) || !std::isfinite(y)) return false;
+    if (cellBlockedAt(x, y)) return false;
+    const double r = vehicle_.width / 2;
+    if (r <= 0) return true;
+    for (int k = 0; k < 8; ++k)
+    {
+        const double a = k * M_PI / 4;
+        if (cellBlockedAt(x + r * std::cos(a), y + r * std::sin(a))) return false;
+    }
+    return true;
+}
+
+FootprintChecker::Stats FootprintChecker::stats() const
+{
+    return Stats{nFastFree_.load(), nFastCollision_.load(), nExact_.load()};
+}
+
+}  // namespace gridcar

@@ -1,0 +1,264 @@
+#include "gridcar/distance/DistanceField.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridcar
+{
+namespace
+{
+constexpr std::int64_t kInf = std::int64_t(1) << 50;
+
+/// Felzenszwalb-Huttenlocher lower envelope in 1D over positions 0..n-1 with costs f
+/// (kInf = no site). Writes d[q] = min_p (q-p)^2 + f[p] and arg[q] = that p (-1 if no site).
+struct Envelope
+{
+    std::vector<int> v;
+    std::vector<double> z;
+    void resize(int n)
+    {
+        v.resize(std::size_t(n));
+        z.resize(std::size_t(n) + 1);
+    }
+    void run(const std::int64_t *f, int n, std::int64_t *d, int *arg)
+    {
+        int k = -1;
+        for (int q = 0; q < n; ++q)
+        {
+            if (f[q] >= kInf) continue;
+            if (k < 0)
+            {
+                k = 0;
+                v[0] = q;
+                z[0] = -1e300;
+                z[1] = 1e300;
+                continue;
+            }
+            double s;
+            while (true)
+            {
+                const int p = v[std::size_t(k)];
+                s = (double(f[q] + std::int64_t(q) * q) - double(f[p] + std::int64_t(p) * p)) / (2.0 * (q - p));
+                if (s <= z[std::size_t(k)] && k > 0) --k;
+                else break;
+            }
+            if (s <= z[std::size_t(k)])  // k == 0 and the new parabola dominates everywhere
+            {
+                v[0] = q;
+                z[0] = -1e300;
+                z[1] = 1e300;
+                continue;
+            }
+            ++k;
+            v[std::size_t(k)] = q;
+            z[std::size_t(k)] = s;
+            z[std::size_t(k) + 1] = 1e300;
+        }
+        if (k < 0)
+        {
+            for (int q = 0; q < n; ++q)
+            {
+                d[q] = kInf;
+                arg[q] = -1;
+            }
+            return;
+        }
+        int j = 0;
+        for (int q = 0; q < n; ++q)
+        {
+            while (z[std::size_t(j) + 1] < q) ++j;
+            const int p = v[std::size_t(j)];
+            d[q] = std::int64_t(q - p) * (q - p) + f[p];
+            arg[q] = p;
+        }
+    }
+};
+
+/// Reusable buffers of edt2d() (the transform runs twice per field: allocate once).
+struct EdtWorkspace
+{
+    std::vector<int> nearRow, nearCol, tmp;
+};
+
+/// Exact 2D EDT of a site mask over a W x H grid, in metres (cells * res) into @p out. With
+/// @p borderSites the ring just outside the grid is made of sites too. With @p wantNearest the
+/// workspace's nearCol / nearRow hold each cell's nearest site afterwards (-1 / W / H for
+/// border sites); otherwise they are scratch.
+void edt2d(const std::vector<std::uint8_t> &site, int W, int H, bool borderSites, double res,
+           std::vector<float> &out, EdtWorkspace &ws, bool wantNearest)
+{
+    const std::size_t N = std::size_t(W) * H;
+    std::vector<int> &nearRow = ws.nearRow, &nearCol = ws.nearCol;
+    nearRow.resize(N);
+    const int none = 1 << 29;
+    // column pass, row-major friendly: forward and backward sweeps keep the last site per column
+    std::vector<int> last(std::size_t(W), borderSites ? -1 : -none);
+    for (int r = 0; r < H; ++r)
+    {
+        const std::uint8_t *srow = site.data() + std::size_t(r) * W;
+        int *nrow = nearRow.data() + std::size_t(r) * W;
+        for (int c = 0; c < W; ++c)
+        {
+            if (srow[c]) last[std::size_t(c)] = r;
+            nrow[c] = last[std::size_t(c)];
+        }
+    }
+    std::fill(last.begin(), last.end(), borderSites ? H : none);
+    for (int r = H - 1; r >= 0; --r)
+    {
+        const std::uint8_t *srow = site.data() + std::size_t(r) * W;
+        int *nrow = nearRow.data() + std::size_t(r) * W;
+        for (int c = 0; c < W; ++c)
+        {
+            if (srow[c]) last[std::size_t(c)] = r;
+            const int down = last[std::size_t(c)];
+            if (down - r < r - nrow[c]) nrow[c] = down;
+        }
+    }
+    // row pass: FH envelope over W (+2 border sites at -1 and W)
+    const int n = W + 2;
+    std::vector<std::int64_t> f(static_cast<std::size_t>(n)), d(static_cast<std::size_t>(n));
+    std::vector<int> arg(static_cast<std::size_t>(n));
+    Envelope env;
+    env.resize(n);
+    out.resize(N);
+    if (wantNearest) nearCol.resize(N);
+    for (int r = 0; r < H; ++r)
+    {
+        f[0] = borderSites ? 0 : kInf;
+        f[std::size_t(n) - 1] = borderSites ? 0 : kInf;
+        const int *nrow = nearRow.data() + std::size_t(r) * W;
+        for (int c = 0; c < W; ++c)
+        {
+            const std::int64_t dy = std::int64_t(nrow[c]) - r;
+            f[std::size_t(c) + 1] = std::abs(dy) >= (1 << 28) ? kInf : dy * dy;
+        }
+        env.run(f.data(), n, d.data(), arg.data());
+        float *orow = out.data() + std::size_t(r) * W;
+        for (int c = 0; c < W; ++c)
+        {
+            const std::int64_t v = d[std::size_t(c) + 1];
+            orow[c] = v >= kInf ? std::numeric_limits<float>::infinity() : float(std::sqrt(double(v)) * res);
+        }
+        if (wantNearest)
+            for (int c = 0; c < W; ++c) nearCol[std::size_t(r) * W + c] = arg[std::size_t(c) + 1] - 1;
+    }
+    if (!wantNearest) return;
+    // resolve the nearest row for each cell from the column pass of its nearest column
+    ws.tmp.resize(N);
+    for (int r = 0; r < H; ++r)
+        for (int c = 0; c < W; ++c)
+        {
+            const std::size_t i = std::size_t(r) * W + c;
+            const int nc = nearCol[i];
+            ws.tmp[i] = (nc < 0 || nc >= W) ? r : nearRow[std::size_t(r) * W + nc];
+        }
+    nearRow.swap(ws.tmp);
+}
+}  // namespace
+
+DistanceField::DistanceField(const OccupancyGrid &grid)
+  : width_(grid.width())
+  , height_(grid.height())
+  , resolution_(grid.resolution())
+  , originX_(grid.originX())
+  , originY_(grid.originY())
+{
+    const int W = width_, H = height_;
+    const std::size_t N = std::size_t(W) * H;
+    if (N == 0) return;
+    std::vector<std::uint8_t> blocked(N);
+    for (int r = 0; r < H; ++r)
+        for (int c = 0; c < W; ++c) blocked[std::size_t(r) * W + c] = grid.isBlocked(c, r) ? 1 : 0;
+
+    EdtWorkspace ws;
+    edt2d(blocked, W, H, true, resolution_, dist_, ws, true);
+    for (std::size_t i = 0; i < N; ++i) maxDist_ = std::max(maxDist_, double(dist_[i]));
+
+    // ---- generalized Voronoi diagram: 4-neighbours whose nearest obstacles lie on opposite
+    // sides (cell -> obstacle vectors more than 90 degrees apart) and are not next to each other
+    const std::vector<int> &nearCol = ws.nearCol, &nearRow = ws.nearRow;
+    const double sep2 = voronoiSeparationCells * voronoiSeparationCells;
+    voronoi_.assign(N, 0);
+    auto consider = [&](std::size_t i, std::size_t j) {
+        if (blocked[i] || blocked[j]) return;
+        const double dc = nearCol[i] - nearCol[j], dr = nearRow[i] - nearRow[j];
+        if (dc * dc + dr * dr <= sep2) return;
+        const int ci = int(i % std::size_t(W)), ri = int(i / std::size_t(W));
+        const int cj = int(j % std::size_t(W)), rj = int(j / std::size_t(W));
+        const double ax = nearCol[i] - ci, ay = nearRow[i] - ri, bx = nearCol[j] - cj, by = nearRow[j] - rj;
+        if (ax * bx + ay * by >= 0.0) return;
+        const std::size_t mark = (dist_[i] > dist_[j] || (dist_[i] == dist_[j] && i < j)) ? i : j;
+        voronoi_[mark] = 1;
+    };
+    for (int r = 0; r < H; ++r)
+        for (int c = 0; c < W; ++c)
+        {
+            const std::size_t i = std::size_t(r) * W + c;
+            if (c + 1 < W) consider(i, i + 1);
+            if (r + 1 < H) consider(i, i + W);
+        }
+    voronoiCount_ = std::size_t(std::count(voronoi_.begin(), voronoi_.end(), std::uint8_t(1)));
+
+    // ---- distance to the GVD (+inf everywhere when there is none)
+    if (voronoiCount_ > 0)
+        edt2d(voronoi_, W, H, false, resolution_, vdist_, ws, false);
+    else
+        vdist_.assign(N, std::numeric_limits<float>::infinity());
+}
+
+double DistanceField::distance(double x, double y) const
+{
+    const double u = (x - originX_) / resolution_ - 0.5;     // column-centre coordinates
+    const double v = (y - originY_) / resolution_ - 0.5;     // from the bottom
+    if (!(u >= -0.5 && v >= -0.5 && u <= width_ - 0.5 && v <= height_ - 0.5)) return 0.0;
+    const int c0 = int(std::floor(u)), v0 = int(std::floor(v));
+    const double fu = u - c0, fv = v - v0;
+    auto at = [&](int c, int vv) {
+        // outside the map rows/cols, clamp to the edge cell (the border obstacle is half a cell
+        // beyond; the edge cell already carries its distance)
+        c = std::clamp(c, 0, width_ - 1);
+        vv = std::clamp(vv, 0, height_ - 1);
+        return double(dist_[idx(c, height_ - 1 - vv)]);
+    };
+    const double a = at(c0, v0), b = at(c0 + 1, v0), cc = at(c0, v0 + 1), d = at(c0 + 1, v0 + 1);
+    return (1 - fv) * ((1 - fu) * a + fu * b) + fv * ((1 - fu) * cc + fu * d);
+}
+
+void DistanceField::gradient(double x, double y, double &gx, double &gy) const
+{
+    gx = gy = 0.0;
+    const double u = (x - originX_) / resolution_ - 0.5;
+    const double v = (y - originY_) / resolution_ - 0.5;
+    if (!(u >= -0.5 && v >= -0.5 && u <= width_ - 0.5 && v <= height_ - 0.5)) return;
+    const int c0 = int(std::floor(u)), v0 = int(std::floor(v));
+    const double fu = u - c0, fv = v - v0;
+    auto at = [&](int c, int vv) {
+        c = std::clamp(c, 0, width_ - 1);
+        vv = std::clamp(vv, 0, height_ - 1);
+        return double(dist_[idx(c, height_ - 1 - vv)]);
+    };
+    const double a = at(c0, v0), b = at(c0 + 1, v0), cc = at(c0, v0 + 1), d = at(c0 + 1, v0 + 1);
+    gx = ((1 - fv) * (b - a) + fv * (d - cc)) / resolution_;
+    gy = ((1 - fu) * (cc - a) + fu * (d - b)) / resolution_;
+}
+
+double DistanceField::voronoiDistance(double x, double y) const
+{
+    const int c = int(std::floor((x - originX_) / resolution_));
+    const int vv = int(std::floor((y - originY_) / resolution_));
+    return cellVoronoiDistance(c, height_ - 1 - vv);
+}
+
+double DistanceField::voronoiField(double x, double y, const VoronoiFieldParams &p) const
+{
+    const double dO = distance(x, y);
+    if (dO <= 0.0) return 1.0;
+    if (dO > p.dOMax) return 0.0;
+    const double dV = voronoiDistance(x, y);
+    const double mid = std::isinf(dV) ? 1.0 : dV / (dO + dV);
+    const double t = (dO - p.dOMax) / p.dOMax;
+    return (p.alpha / (p.alpha + dO)) * mid * t * t;
+}
+
+}  // namespace gridcar

@@ -1,0 +1,108 @@
+#include "gridcar/map/OccupancyGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace gridcar
+{
+OccupancyGrid::OccupancyGrid(int width, int height, double resolution, CellState fill)
+{
+    if (width <= 0 || height <= 0)
+    {
+        std::ostringstream os;
+        os << "grid size must be positive, got " << width << " x " << height;
+        throw std::invalid_argument(os.str());
+    }
+    if (std::size_t(width) * std::size_t(height) > kMaxMapCells)
+    {
+        std::ostringstream os;
+        os << "grid size " << width << " x " << height << " exceeds the limit of " << kMaxMapCells << " cells";
+        throw std::invalid_argument(os.str());
+    }
+    if (!std::isfinite(resolution) || resolution <= 0.0)
+    {
+        std::ostringstream os;
+        os << "resolution must be a positive finite number of metres per cell, got " << resolution;
+        throw std::invalid_argument(os.str());
+    }
+    width_ = width;
+    height_ = height;
+    resolution_ = resolution;
+    cells_.assign(std::size_t(width) * std::size_t(height), fill);
+}
+
+void OccupancyGrid::setOrigin(double x, double y, double yaw)
+{
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw))
+        throw std::invalid_argument("map origin must be finite");
+    originX_ = x;
+    originY_ = y;
+    originYaw_ = yaw;
+}
+
+Cell OccupancyGrid::worldToCell(double x, double y) const
+{
+    const double u = std::floor(worldToMapU(x));
+    const double v = std::floor(worldToMapV(y));
+    // clamp into int range before the cast; out-of-range values stay out of bounds
+    const double lim = 4.0e9;
+    const int col = int(std::max(-lim / 2, std::min(lim / 2, std::isfinite(u) ? u : -1.0)));
+    const int vi = int(std::max(-lim / 2, std::min(lim / 2, std::isfinite(v) ? v : -1.0)));
+    return Cell{col, height_ - 1 - vi};
+}
+
+OccupancyGrid::Counts OccupancyGrid::counts() const
+{
+    Counts c;
+    for (CellState s : cells_)
+    {
+        if (s == CellState::Free) ++c.free;
+        else if (s == CellState::Occupied) ++c.occupied;
+        else ++c.unknown;
+    }
+    return c;
+}
+
+OccupancyGrid OccupancyGrid::resampled(double newResolution) const
+{
+    if (!std::isfinite(newResolution) || newResolution <= 0.0)
+        throw std::invalid_argument("resample resolution must be positive");
+    const int nw = std::max(1, int(std::ceil(sizeX() / newResolution - 1e-9)));
+    const int nh = std::max(1, int(std::ceil(sizeY() / newResolution - 1e-9)));
+    OccupancyGrid out(nw, nh, newResolution, CellState::Free);
+    out.setOrigin(originX_, originY_, originYaw_);
+    out.setUnknownIsFree(unknownIsFree_);
+    const double ratio = newResolution / resolution_;
+    for (int r = 0; r < nh; ++r)
+    {
+        // new row r covers map-frame v in [nh-1-r, nh-r) * newRes (from the bottom)
+        const double v0 = (nh - 1 - r) * ratio, v1 = (nh - r) * ratio;
+        const int srcV0 = std::max(0, int(std::floor(v0 + 1e-9)));
+        const int srcV1 = std::min(height_ - 1, int(std::ceil(v1 - 1e-9)) - 1);
+        for (int c = 0; c < nw; ++c)
+        {
+            const double u0 = c * ratio, u1 = (c + 1) * ratio;
+            const int srcU0 = std::max(0, int(std::floor(u0 + 1e-9)));
+            const int srcU1 = std::min(width_ - 1, int(std::ceil(u1 - 1e-9)) - 1);
+            bool occ = false, unk = false;
+            for (int sv = srcV0; sv <= srcV1 && !occ; ++sv)
+            {
+                const int srow = height_ - 1 - sv;
+                for (int su = srcU0; su <= srcU1; ++su)
+                {
+                    const CellState s = at(su, srow);
+                    if (s == CellState::Occupied) { occ = true; break; }
+                    if (s == CellState::Unknown) unk = true;
+                }
+            }
+            // cells past the source extent (partial last row/column) count as occupied
+            if (srcU1 < srcU0 || srcV1 < srcV0) occ = true;
+            out.set(c, r, occ ? CellState::Occupied : (unk ? CellState::Unknown : CellState::Free));
+        }
+    }
+    return out;
+}
+
+}  // namespace gridcar

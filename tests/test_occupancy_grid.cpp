@@ -1,0 +1,75 @@
+#include "gridcar/map/OccupancyGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace gridcar;
+
+TEST(OccupancyGrid, WorldCellRoundTripFollowsRosConvention)
+{
+    OccupancyGrid g(10, 5, 0.5);
+    g.setOrigin(-1.0, 2.0, 0.0);
+    // lower-left cell (col 0, row 4) has its centre at origin + half a cell
+    EXPECT_DOUBLE_EQ(g.cellCenterX(0), -0.75);
+    EXPECT_DOUBLE_EQ(g.cellCenterY(4), 2.25);
+    // top row is row 0, at the highest y
+    EXPECT_DOUBLE_EQ(g.cellCenterY(0), 2.0 + 4.5 * 0.5);
+    for (int r = 0; r < 5; ++r)
+        for (int c = 0; c < 10; ++c)
+        {
+            const Cell cell = g.worldToCell(g.cellCenterX(c), g.cellCenterY(r));
+            EXPECT_EQ(cell.col, c);
+            EXPECT_EQ(cell.row, r);
+        }
+    EXPECT_FALSE(g.inBounds(g.worldToCell(-1.01, 2.1).col, g.worldToCell(-1.01, 2.1).row));
+    const Cell nanCell = g.worldToCell(std::nan(""), 0.0);
+    EXPECT_FALSE(g.inBounds(nanCell.col, nanCell.row));
+}
+
+TEST(OccupancyGrid, UnknownIsBlockedUnlessSaidOtherwise)
+{
+    OccupancyGrid g(3, 1, 1.0);
+    g.set(0, 0, CellState::Free);
+    g.set(1, 0, CellState::Unknown);
+    g.set(2, 0, CellState::Occupied);
+    EXPECT_FALSE(g.isBlocked(0, 0));
+    EXPECT_TRUE(g.isBlocked(1, 0));
+    EXPECT_TRUE(g.isBlocked(2, 0));
+    EXPECT_TRUE(g.isBlocked(-1, 0));
+    EXPECT_TRUE(g.isBlocked(3, 0));
+    g.setUnknownIsFree(true);
+    EXPECT_FALSE(g.isBlocked(1, 0));
+    const auto c = g.counts();
+    EXPECT_EQ(c.free, 1u);
+    EXPECT_EQ(c.unknown, 1u);
+    EXPECT_EQ(c.occupied, 1u);
+}
+
+TEST(OccupancyGrid, RejectsBadSizes)
+{
+    EXPECT_THROW(OccupancyGrid(0, 5, 1.0), std::invalid_argument);
+    EXPECT_THROW(OccupancyGrid(5, -1, 1.0), std::invalid_argument);
+    EXPECT_THROW(OccupancyGrid(1000000000, 1000000000, 1.0), std::invalid_argument);
+    EXPECT_THROW(OccupancyGrid(5, 5, 0.0), std::invalid_argument);
+    EXPECT_THROW(OccupancyGrid(5, 5, -0.1), std::invalid_argument);
+    EXPECT_THROW(OccupancyGrid(5, 5, std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+    OccupancyGrid g(2, 2, 1.0);
+    EXPECT_THROW(g.setOrigin(std::nan(""), 0, 0), std::invalid_argument);
+}
+
+TEST(OccupancyGrid, ResampleIsConservative)
+{
+    OccupancyGrid g(6, 6, 0.1);
+    g.set(5, 5, CellState::Occupied);  // bottom-right cell
+    g.set(0, 0, CellState::Unknown);   // top-left cell
+    const OccupancyGrid r = g.resampled(0.3);
+    ASSERT_EQ(r.width(), 2);
+    ASSERT_EQ(r.height(), 2);
+    EXPECT_EQ(r.at(1, 1), CellState::Occupied);
+    EXPECT_EQ(r.at(0, 0), CellState::Unknown);
+    EXPECT_EQ(r.at(1, 0), CellState::Free);
+    EXPECT_EQ(r.at(0, 1), CellState::Free);
+    EXPECT_DOUBLE_EQ(r.resolution(), 0.3);
+}
