@@ -55,8 +55,8 @@ LatticeState GridSE2StateSpace::toLattice(const ompl::base::State *state) const
 
 double GridSE2StateSpace::binYaw(int bin) const
 {
-    // OMPL's SO2 range is [-pi, pi): bins at or past pi (up to rounding) map to the negative side
-    const double yaw = bin * headingStep();
+    // bins at pi (up to rounding) map to -pi: OMPL's SO2 range is [-pi, pi)
+    const double yaw = wrapYaw(bin * headingStep());
     return yaw >= M_PI - 1e-12 ? yaw - 2.0 * M_PI : yaw;
 }
 

@@ -6,6 +6,8 @@
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 
+#include <cmath>
+
 namespace gridcar
 {
 /// A lattice state: map cell (col, row; row 0 is the top image row) and heading bin.
@@ -50,6 +52,13 @@ public:
     double cellCenterX(int col) const { return originX_ + (col + 0.5) * resolution_; }
     double cellCenterY(int row) const { return originY_ + (height_ - row - 0.5) * resolution_; }
     double binYaw(int bin) const;
+    /// A yaw mapped into OMPL's SO2 range [-pi, pi) (OMPL 1.5 rejects exactly +pi).
+    static double wrapYaw(double yaw)
+    {
+        double y = std::remainder(yaw, 2.0 * M_PI);
+        if (y >= M_PI) y -= 2.0 * M_PI;
+        return y;
+    }
     bool inBounds(const LatticeState &l) const
     {
         return l.col >= 0 && l.row >= 0 && l.col < width_ && l.row < height_ && l.heading >= 0 && l.heading < bins_;

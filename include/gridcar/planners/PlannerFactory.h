@@ -1,0 +1,22 @@
+#pragma once
+/// @file PlannerFactory.h
+/// @brief Planners by name: gridcar's grid planners and OMPL's sampling planners.
+
+#include <ompl/base/Planner.h>
+
+#include <string>
+#include <vector>
+
+namespace gridcar
+{
+/// dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar.
+std::vector<std::string> gridPlannerNames();
+/// rrt, rrtconnect, rrtstar, prm, prmstar, lazyprmstar, bitstar, informedrrtstar.
+std::vector<std::string> omplPlannerNames();
+/// Both lists.
+std::vector<std::string> plannerNames();
+
+/// A new planner by name. Throws std::invalid_argument listing the known names.
+ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name);
+
+}  // namespace gridcar

@@ -1,0 +1,189 @@
+#pragma once
+/// @file SearchCore.h
+/// @brief The one A* search loop shared by every grid planner.
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <vector>
+
+namespace gridcar
+{
+/// Dense per-state storage (g, parent, open/closed) over states 0..n-1, reused between
+/// searches without clearing: a state's entry is valid only if its stamp equals the current
+/// search's. Arrays are allocated once with calloc/malloc, so pages of states a search never
+/// touches are never committed.
+class SearchSpace
+{
+public:
+    explicit SearchSpace(std::size_t n);
+    ~SearchSpace();
+    SearchSpace(const SearchSpace &) = delete;
+    SearchSpace &operator=(const SearchSpace &) = delete;
+
+    std::size_t size() const { return n_; }
+    /// Starts a new search: every state becomes unseen (O(1) except on stamp wrap-around).
+    void reset();
+
+    bool seen(std::uint32_t s) const { return (stamp_[s] >> 1) == epoch_; }
+    bool closed(std::uint32_t s) const { return stamp_[s] == ((epoch_ << 1) | 1u); }
+    double g(std::uint32_t s) const { return seen(s) ? g_[s] : std::numeric_limits<double>::infinity(); }
+    std::uint32_t parent(std::uint32_t s) const { return parent_[s]; }
+    void open(std::uint32_t s, double g, std::uint32_t parent)
+    {
+        stamp_[s] = epoch_ << 1;
+        g_[s] = g;
+        parent_[s] = parent;
+    }
+    void close(std::uint32_t s) { stamp_[s] = (epoch_ << 1) | 1u; }
+
+    static constexpr std::uint32_t kNoParent = std::numeric_limits<std::uint32_t>::max();
+
+private:
+    std::size_t n_;
+    std::uint32_t epoch_{0};
+    std::uint32_t *stamp_{nullptr};
+    double *g_{nullptr};
+    std::uint32_t *parent_{nullptr};
+};
+
+/// How a search ended.
+enum class SearchOutcome
+{
+    Found,      ///< a goal state was expanded
+    Exhausted,  ///< the open list ran empty: no goal is reachable
+    Cancelled   ///< the termination condition fired
+};
+
+/// Counters and the result state of one search.
+struct SearchResult
+{
+    SearchOutcome outcome{SearchOutcome::Exhausted};
+    std::uint32_t goal{SearchSpace::kNoParent};     ///< the goal state reached (Found)
+    std::uint32_t closest{SearchSpace::kNoParent};  ///< expanded state of least heuristic
+    std::uint64_t expanded{0};
+    std::uint64_t generated{0};
+};
+
+/**
+ * @brief A* over the states of @p space.
+ *
+ * The expander supplies the problem:
+ * - `double heuristic(uint32_t s) const` (admissible for an optimal search; 0 gives Dijkstra),
+ * - `bool isGoal(uint32_t s)` (tested when a state is expanded, so any goal region works),
+ * - `template <class Emit> void successors(uint32_t s, Emit &&emit)` calling
+ *   `emit(uint32_t next, double stepCost)` for every valid successor.
+ *
+ * Open list: binary heap with lazy deletion (stale entries are skipped when popped).
+ * Tie-breaking is deterministic: lower f first, then higher g (deeper states, fewer
+ * re-expansions on plateaus), then lower state index. @p cancelled is polled every 256
+ * expansions. With a consistent heuristic each state is expanded at most once; with an
+ * inconsistent one (paper I's mode) a closed state is reopened when a cheaper g reaches it.
+ */
+template <class Expander, class Cancelled>
+SearchResult astar(SearchSpace &space, const std::vector<std::uint32_t> &starts, Expander &ex, Cancelled &&cancelled,
+                   std::uint64_t *progress = nullptr)
+{
+    struct Entry
+    {
+        double f, g;
+        std::uint32_t s;
+    };
+    // "a after b" in the max-heap sense: std heap keeps the greatest on top, so invert
+    auto worse = [](const Entry &a, const Entry &b) {
+        if (a.f != b.f) return a.f > b.f;
+        if (a.g != b.g) return a.g < b.g;
+        return a.s > b.s;
+    };
+    SearchResult res;
+    space.reset();
+    std::vector<Entry> heap;
+    heap.reserve(1024);
+    for (std::uint32_t s : starts)
+    {
+        if (space.seen(s)) continue;
+        space.open(s, 0.0, SearchSpace::kNoParent);
+        heap.push_back({ex.heuristic(s), 0.0, s});
+        std::push_heap(heap.begin(), heap.end(), worse);
+    }
+    double bestH = std::numeric_limits<double>::infinity();
+    while (!heap.empty())
+    {
+        std::pop_heap(heap.begin(), heap.end(), worse);
+        const Entry e = heap.back();
+        heap.pop_back();
+        if (space.closed(e.s) || e.g > space.g(e.s)) continue;  // stale entry
+        space.close(e.s);
+        ++res.expanded;
+        if (progress) *progress = res.expanded;
+        const double h = e.f - e.g;
+        if (h < bestH)
+        {
+            bestH = h;
+            res.closest = e.s;
+        }
+        if (ex.isGoal(e.s))
+        {
+            res.outcome = SearchOutcome::Found;
+            res.goal = e.s;
+            return res;
+        }
+        if ((res.expanded & 255u) == 0 && cancelled())
+        {
+            res.outcome = SearchOutcome::Cancelled;
+            return res;
+        }
+        ex.successors(e.s, [&](std::uint32_t n, double cost) {
+            const double ng = e.g + cost;
+            if (ng < space.g(n))
+            {
+                space.open(n, ng, e.s);
+                heap.push_back({ng + ex.heuristic(n), ng, n});
+                std::push_heap(heap.begin(), heap.end(), worse);
+                ++res.generated;
+            }
+        });
+    }
+    res.outcome = SearchOutcome::Exhausted;
+    return res;
+}
+
+inline SearchSpace::SearchSpace(std::size_t n) : n_(n)
+{
+    if (n == 0 || n >= std::numeric_limits<std::uint32_t>::max())
+        throw std::invalid_argument("search space size must be in 1..2^32-2 states");
+    stamp_ = static_cast<std::uint32_t *>(std::calloc(n, sizeof(std::uint32_t)));
+    g_ = static_cast<double *>(std::malloc(n * sizeof(double)));
+    parent_ = static_cast<std::uint32_t *>(std::malloc(n * sizeof(std::uint32_t)));
+    if (!stamp_ || !g_ || !parent_)
+    {
+        std::free(stamp_);
+        std::free(g_);
+        std::free(parent_);
+        throw std::bad_alloc();
+    }
+}
+
+inline SearchSpace::~SearchSpace()
+{
+    std::free(stamp_);
+    std::free(g_);
+    std::free(parent_);
+}
+
+inline void SearchSpace::reset()
+{
+    ++epoch_;
+    if (epoch_ >= (1u << 31))  // stamps would wrap: clear them once
+    {
+        std::memset(stamp_, 0, n_ * sizeof(std::uint32_t));
+        epoch_ = 1;
+    }
+}
+
+}  // namespace gridcar

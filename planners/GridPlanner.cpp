@@ -1,0 +1,486 @@
+#include "gridcar/planners/GridPlanner.h"
+
+#include "gridcar/spaces/OmplAdapters.h"
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/goals/GoalRegion.h>
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+
+#include <cmath>
+
+namespace gridcar
+{
+constexpr int Moves::dcol[8];
+constexpr int Moves::drow[8];
+
+int Moves::fromYaw(double yaw)
+{
+    if (!std::isfinite(yaw)) return 0;
+    long k = std::lround(std::floor(yaw / (M_PI / 4.0) + 0.5));
+    k %= 8;
+    if (k < 0) k += 8;
+    return int(k);
+}
+
+GridPlanner::GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name)
+  : ompl::base::Planner(si, name)
+{
+    specs_.approximateSolutions = true;
+    specs_.optimizingPaths = false;  // optimal for their own search cost, not for an objective
+    specs_.directed = true;
+    specs_.multithreaded = false;
+    specs_.recognizedGoal = ompl::base::GOAL_REGION;
+    declareParam<bool>("allow_corner_cutting", this, &GridPlanner::setAllowCornerCutting,
+                       &GridPlanner::allowCornerCutting, "0,1");
+    declareParam<bool>("free_start_heading", this, &GridPlanner::setFreeStartHeading,
+                       &GridPlanner::freeStartHeading, "0,1");
+    declareParam<bool>("match_goal_heading", this, &GridPlanner::setMatchGoalHeading,
+                       &GridPlanner::matchGoalHeading, "0,1");
+    addPlannerProgressProperty("expanded nodes INTEGER",
+                               [this] { return std::to_string(progressExpanded_); });
+}
+
+GridPlanner::~GridPlanner()
+{
+    freeDataStates();
+    if (scratchA_) si_->freeState(scratchA_);
+    if (scratchB_) si_->freeState(scratchB_);
+}
+
+void GridPlanner::setAllowCornerCutting(bool v)
+{
+    if (v != allowCornerCutting_) std::fill(moveCache_.begin(), moveCache_.end(), 0);
+    allowCornerCutting_ = v;
+}
+
+void GridPlanner::setup()
+{
+    ompl::base::Planner::setup();
+    space_ = std::dynamic_pointer_cast<GridSE2StateSpace>(si_->getStateSpace());
+    if (!space_)
+        throw ompl::Exception(getName(), "needs a gridcar::GridSE2StateSpace (see gridcar::makeGridSetup)");
+    auto vc = std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker());
+    checker_ = vc ? &vc->checker() : nullptr;
+    width_ = space_->width();
+    height_ = space_->height();
+    straightStep_ = space_->cellSize();
+    diagStep_ = space_->cellSize() * std::sqrt(2.0);
+    if (!scratchA_) scratchA_ = si_->allocState();
+    if (!scratchB_) scratchB_ = si_->allocState();
+    const std::size_t cells = std::size_t(width_) * height_;
+    if (moveCache_.size() != cells * 8) moveCache_.assign(cells * 8, 0);
+    if (!search_ || search_->size() != stateCount()) search_ = std::make_unique<SearchSpace>(stateCount());
+}
+
+void GridPlanner::clear()
+{
+    ompl::base::Planner::clear();
+    freeDataStates();
+    lastPath_.clear();
+    lastExpanded_ = 0;
+    progressExpanded_ = 0;
+    lastCost_ = 0.0;
+    // the move cache depends only on the map and the vehicle: kept
+}
+
+bool GridPlanner::poseValid(double x, double y, double yaw) const
+{
+    if (checker_) return checker_->isValid(x, y, yaw);
+    auto *s = scratchA_->as<ompl::base::SE2StateSpace::StateType>();
+    s->setXY(x, y);
+    s->setYaw(yaw);
+    return si_->isValid(scratchA_);
+}
+
+bool GridPlanner::checkMoveUncached(int col, int row, int d) const
+{
+    const int nc = col + Moves::dcol[d], nr = row + Moves::drow[d];
+    if (nc < 0 || nr < 0 || nc >= width_ || nr >= height_) return false;
+    const OccupancyGrid *grid = checker_ ? &checker_->grid() : nullptr;
+    if ((d & 1) && !allowCornerCutting_)
+    {
+        // both side cells of a diagonal must be free (Moving AI rule)
+        if (grid)
+        {
+            if (grid->isBlocked(nc, row) || grid->isBlocked(col, nr)) return false;
+        }
+        else if (!poseValid(space_->cellCenterX(nc), space_->cellCenterY(row), Moves::yaw(d)) ||
+                 !poseValid(space_->cellCenterX(col), space_->cellCenterY(nr), Moves::yaw(d)))
+            return false;
+    }
+    const double yaw = Moves::yaw(d);
+    const Pose2 a{space_->cellCenterX(col), space_->cellCenterY(row), yaw};
+    const Pose2 b{space_->cellCenterX(nc), space_->cellCenterY(nr), yaw};
+    if (checker_)
+    {
+        if (checker_->vehicle().isPoint())  // plain grid: the target cell (and the rule above)
+            return !grid->isBlocked(nc, nr);
+        return checker_->isMotionValid(a, b);
+    }
+    auto *sa = scratchA_->as<ompl::base::SE2StateSpace::StateType>();
+    auto *sb = scratchB_->as<ompl::base::SE2StateSpace::StateType>();
+    sa->setXY(a.x, a.y);
+    sa->setYaw(yaw);
+    sb->setXY(b.x, b.y);
+    sb->setYaw(yaw);
+    return si_->isValid(scratchA_) && si_->isValid(scratchB_) && si_->checkMotion(scratchA_, scratchB_);
+}
+
+bool GridPlanner::moveValid(int col, int row, int d) const
+{
+    std::uint8_t &c = moveCache_[(std::size_t(row) * width_ + col) * 8 + d];
+    if (c == 0) c = checkMoveUncached(col, row, d) ? 1 : 2;
+    return c == 1;
+}
+
+double GridPlanner::octile(int c0, int r0, int c1, int r1) const
+{
+    const int dx = std::abs(c1 - c0), dy = std::abs(r1 - r0);
+    return straightStep_ * std::max(dx, dy) + (diagStep_ - straightStep_) * std::min(dx, dy);
+}
+
+bool GridPlanner::isGoal(int col, int row, int dir) const
+{
+    if (query_.goalIsState)
+        return col == query_.goalCol && row == query_.goalRow &&
+               (query_.goalDir < 0 || dir < 0 || dir == query_.goalDir);
+    auto *s = scratchB_->as<ompl::base::SE2StateSpace::StateType>();
+    s->setXY(space_->cellCenterX(col), space_->cellCenterY(row));
+    s->setYaw(dir >= 0 ? GridSE2StateSpace::wrapYaw(Moves::yaw(dir)) : 0.0);
+    return goalRegion_->isSatisfied(scratchB_);
+}
+
+ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminationCondition &ptc)
+{
+    using ompl::base::PlannerStatus;
+    checkValidity();
+    lastPath_.clear();
+    lastExpanded_ = 0;
+    progressExpanded_ = 0;
+    const ompl::base::State *start = pis_.nextStart();
+    if (!start)
+    {
+        OMPL_ERROR("%s: no valid start state (off the map or in collision)", getName().c_str());
+        return PlannerStatus::INVALID_START;
+    }
+    const auto *st = start->as<ompl::base::SE2StateSpace::StateType>();
+    const LatticeState sl = space_->toLattice(start);
+    if (!space_->inBounds(sl))
+        return PlannerStatus::INVALID_START;
+    query_ = Query();
+    query_.startCol = sl.col;
+    query_.startRow = sl.row;
+    query_.startDir = freeStartHeading_ ? -1 : Moves::fromYaw(st->getYaw());
+
+    auto *goal = pdef_->getGoal().get();
+    goalRegion_ = dynamic_cast<const ompl::base::GoalRegion *>(goal);
+    if (!goalRegion_)
+    {
+        OMPL_ERROR("%s: the goal must be a GoalRegion (e.g. GoalState)", getName().c_str());
+        return PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
+    }
+    if (auto *gs = dynamic_cast<const ompl::base::GoalState *>(goal))
+    {
+        const ompl::base::State *g = gs->getState();
+        if (!si_->satisfiesBounds(g) || !si_->isValid(g))
+        {
+            OMPL_ERROR("%s: goal state is off the map or in collision", getName().c_str());
+            return PlannerStatus::INVALID_GOAL;
+        }
+        const LatticeState gl = space_->toLattice(g);
+        query_.goalIsState = true;
+        query_.goalCol = gl.col;
+        query_.goalRow = gl.row;
+        query_.goalDir = matchGoalHeading_ ? Moves::fromYaw(g->as<ompl::base::SE2StateSpace::StateType>()->getYaw()) : -1;
+    }
+
+    const std::vector<std::uint32_t> starts = startStates(query_);
+    const SearchResult res = runSearch(query_, starts, ptc);
+    lastExpanded_ = res.expanded;
+    progressExpanded_ = res.expanded;
+    if (res.outcome == SearchOutcome::Cancelled && res.closest == SearchSpace::kNoParent)
+        return PlannerStatus::TIMEOUT;
+    const std::uint32_t end = res.outcome == SearchOutcome::Found ? res.goal : res.closest;
+    if (end == SearchSpace::kNoParent) return PlannerStatus::TIMEOUT;
+    for (std::uint32_t s = end; s != SearchSpace::kNoParent; s = search_->parent(s)) lastPath_.push_back(s);
+    std::reverse(lastPath_.begin(), lastPath_.end());
+    lastCost_ = search_->g(end);
+
+    auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
+    path->append(start);
+    ompl::base::State *tmp = si_->allocState();
+    for (std::size_t i = 1; i < lastPath_.size(); ++i)
+    {
+        int c, r, d;
+        decode(lastPath_[i], c, r, d);
+        int pc, pr, pd;
+        decode(lastPath_[i - 1], pc, pr, pd);
+        auto *ts = tmp->as<ompl::base::SE2StateSpace::StateType>();
+        ts->setXY(space_->cellCenterX(c), space_->cellCenterY(r));
+        ts->setYaw(GridSE2StateSpace::wrapYaw(std::atan2(double(pr - r), double(c - pc))));  // rows grow downwards
+        path->append(tmp);
+    }
+    si_->freeState(tmp);
+    const bool exact = res.outcome == SearchOutcome::Found;
+    if (exact)
+        if (auto *gs = dynamic_cast<const ompl::base::GoalState *>(goal))
+            if (lastPath_.size() > 1 || !si_->equalStates(start, gs->getState())) path->append(gs->getState());
+    double dist = 0.0;
+    goalRegion_->isSatisfied(path->getState(path->getStateCount() - 1), &dist);
+    pdef_->addSolutionPath(path, !exact, exact ? 0.0 : dist, getName());
+    if (exact) return PlannerStatus::EXACT_SOLUTION;
+    if (res.outcome == SearchOutcome::Cancelled) return PlannerStatus(PlannerStatus::TIMEOUT);
+    return PlannerStatus::APPROXIMATE_SOLUTION;
+}
+
+std::vector<Cell> GridPlanner::expandedCells() const
+{
+    std::vector<Cell> out;
+    if (!search_) return out;
+    const std::size_t n = stateCount();
+    for (std::size_t s = 0; s < n; ++s)
+        if (search_->closed(std::uint32_t(s)))
+        {
+            int c, r, d;
+            decode(std::uint32_t(s), c, r, d);
+            out.push_back({c, r});
+        }
+    return out;
+}
+
+void GridPlanner::getPlannerData(ompl::base::PlannerData &data) const
+{
+    ompl::base::Planner::getPlannerData(data);
+    if (!search_ || !space_) return;
+    // PlannerData identifies vertices by state pointer: one state per expanded search state,
+    // owned here until clear() (decoupleFromPlanner() copies them)
+    auto stateOf = [&](std::uint32_t s) {
+        auto it = dataStates_.find(s);
+        if (it != dataStates_.end()) return it->second;
+        int c, r, d;
+        decode(s, c, r, d);
+        ompl::base::State *st = si_->allocState();
+        auto *se2 = st->as<ompl::base::SE2StateSpace::StateType>();
+        se2->setXY(space_->cellCenterX(c), space_->cellCenterY(r));
+        se2->setYaw(d >= 0 ? GridSE2StateSpace::wrapYaw(Moves::yaw(d)) : 0.0);
+        dataStates_.emplace(s, st);
+        return st;
+    };
+    const std::size_t n = stateCount();
+    for (std::size_t s = 0; s < n; ++s)
+    {
+        if (!search_->closed(std::uint32_t(s))) continue;
+        const std::uint32_t p = search_->parent(std::uint32_t(s));
+        if (p == SearchSpace::kNoParent)
+            data.addStartVertex(ompl::base::PlannerDataVertex(stateOf(std::uint32_t(s))));
+        else
+            data.addEdge(ompl::base::PlannerDataVertex(stateOf(p)), ompl::base::PlannerDataVertex(stateOf(std::uint32_t(s))));
+    }
+}
+
+void GridPlanner::freeDataStates()
+{
+    for (auto &kv : dataStates_) si_->freeState(kv.second);
+    dataStates_.clear();
+}
+
+// ------------------------------------------------------------------ GridAStar
+namespace
+{
+template <class Owner>
+struct CellExpander
+{
+    const Owner &o;
+    int W;
+    GridHeuristic h;
+    double straight, diag;
+    int goalCol, goalRow;
+    bool goalKnown;
+    double heuristic(std::uint32_t s) const
+    {
+        if (h == GridHeuristic::Zero || !goalKnown) return 0.0;
+        const int c = int(s % std::uint32_t(W)), r = int(s / std::uint32_t(W));
+        const int dx = std::abs(goalCol - c), dy = std::abs(goalRow - r);
+        switch (h)
+        {
+            case GridHeuristic::Manhattan: return straight * (dx + dy);
+            case GridHeuristic::Euclidean: return straight * std::sqrt(double(dx) * dx + double(dy) * dy);
+            case GridHeuristic::Octile: return straight * std::max(dx, dy) + (diag - straight) * std::min(dx, dy);
+            default: return 0.0;
+        }
+    }
+    bool isGoal(std::uint32_t s) const { return o.goalTest(int(s % std::uint32_t(W)), int(s / std::uint32_t(W)), -1); }
+    template <class Emit>
+    void successors(std::uint32_t s, Emit &&emit) const
+    {
+        const int c = int(s % std::uint32_t(W)), r = int(s / std::uint32_t(W));
+        for (int d = 0; d < 8; ++d)
+            if (o.move(c, r, d))
+                emit(std::uint32_t((r + Moves::drow[d]) * W + c + Moves::dcol[d]), (d & 1) ? diag : straight);
+    }
+};
+}  // namespace
+
+GridAStar::GridAStar(const ompl::base::SpaceInformationPtr &si, GridHeuristic h, const std::string &name)
+  : GridPlanner(si, name), heuristic_(h)
+{
+    specs_.optimizingPaths = false;
+}
+
+std::size_t GridAStar::stateCount() const { return std::size_t(width_) * height_; }
+
+std::vector<std::uint32_t> GridAStar::startStates(const Query &q) const
+{
+    return {std::uint32_t(q.startRow * width_ + q.startCol)};
+}
+
+void GridAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
+{
+    col = int(s % std::uint32_t(width_));
+    row = int(s / std::uint32_t(width_));
+    dir = -1;
+}
+
+SearchResult GridAStar::runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
+                                  const ompl::base::PlannerTerminationCondition &ptc)
+{
+    struct Access
+    {
+        const GridAStar *self;
+        bool goalTest(int c, int r, int d) const { return self->isGoal(c, r, d); }
+        bool move(int c, int r, int d) const { return self->moveValid(c, r, d); }
+    } access{this};
+    CellExpander<Access> ex{access, width_, heuristic_, straightStep_, diagStep_, q.goalCol, q.goalRow, q.goalIsState};
+    return astar(*search_, starts, ex, [&] { return ptc.eval(); }, &progressExpanded_);
+}
+
+// ------------------------------------------------------------------ CornerAStar
+/// Successors of corner-weighted A*: state = cell * 8 + arrival direction.
+struct CornerExpander
+{
+    const GridPlanner *self;
+    const GridPlanner::Query &q;
+    const double *turnCost;
+    int W;
+    double heuristic(std::uint32_t s) const
+    {
+        if (!q.goalIsState) return 0.0;
+        const std::uint32_t cell = s / 8;
+        return self->octile(int(cell % std::uint32_t(W)), int(cell / std::uint32_t(W)), q.goalCol, q.goalRow);
+    }
+    bool isGoal(std::uint32_t s) const
+    {
+        const std::uint32_t cell = s / 8;
+        return self->isGoal(int(cell % std::uint32_t(W)), int(cell / std::uint32_t(W)), int(s % 8));
+    }
+    template <class Emit>
+    void successors(std::uint32_t s, Emit &&emit) const
+    {
+        const std::uint32_t cell = s / 8;
+        const int dir = int(s % 8), c = int(cell % std::uint32_t(W)), r = int(cell / std::uint32_t(W));
+        for (int d = 0; d < 8; ++d)
+        {
+            const int t = Moves::turn(dir, d);
+            if (t == 4 || !self->moveValid(c, r, d)) continue;  // never a reversal
+            const std::uint32_t next = std::uint32_t((r + Moves::drow[d]) * W + c + Moves::dcol[d]) * 8 + std::uint32_t(d);
+            emit(next, self->stepLength(d) + turnCost[t]);
+        }
+    }
+};
+
+CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanner(si, "corner-astar")
+{
+    weights_ = userWeights_;
+    declareParam<double>("corner_weight_45", this, &CornerAStar::setWeight45,
+                         &CornerAStar::weight45, "0.:0.1:50.");
+    declareParam<double>("corner_weight_90", this, &CornerAStar::setWeight90,
+                         &CornerAStar::weight90, "0.:0.1:100.");
+    declareParam<double>("corner_weight_135", this, &CornerAStar::setWeight135,
+                         &CornerAStar::weight135, "0.:0.1:200.");
+    declareParam<std::string>("weights", this, &CornerAStar::setWeightMode, &CornerAStar::weightMode, "paper,physics");
+}
+
+namespace
+{
+double checkedWeight(double w, const char *name)
+{
+    if (!std::isfinite(w) || w < 0.0)
+        throw ompl::Exception("corner-astar", std::string(name) + " must be a finite number >= 0 (metres)");
+    return w;
+}
+}  // namespace
+
+void CornerAStar::setWeight45(double w) { userWeights_.w45 = weights_.w45 = checkedWeight(w, "corner_weight_45"); }
+void CornerAStar::setWeight90(double w) { userWeights_.w90 = weights_.w90 = checkedWeight(w, "corner_weight_90"); }
+void CornerAStar::setWeight135(double w) { userWeights_.w135 = weights_.w135 = checkedWeight(w, "corner_weight_135"); }
+
+void CornerAStar::setWeightMode(const std::string &mode)
+{
+    if (mode != "paper" && mode != "physics")
+        throw ompl::Exception("corner-astar", "weights must be 'paper' or 'physics', got '" + mode + "'");
+    physics_ = mode == "physics";
+    setup_ = false;
+}
+
+CornerWeights CornerAStar::physicsWeights(const VehicleParams &v)
+{
+    const double V = v.maxSpeed;
+    const double alat = std::min(v.friction * 9.81, v.maxLateralAccel);
+    auto cornerSpeed = [&](double thetaDeg, double given) {
+        if (given > 0.0) return std::min(V, given);
+        const double r = std::max(v.minTurningRadius(), 1e-3) / std::tan(thetaDeg * M_PI / 360.0);
+        return std::min(V, std::sqrt(alat * r));
+    };
+    auto lost = [&](double vc) { return 0.5 * (V - vc) * (V - vc) * (1.0 / v.acceleration + 1.0 / v.deceleration); };
+    CornerWeights w;
+    w.w45 = lost(cornerSpeed(45.0, v.cornerSpeed45));
+    w.w90 = lost(cornerSpeed(90.0, v.cornerSpeed90));
+    w.w135 = lost(cornerSpeed(135.0, v.cornerSpeed135));
+    return w;
+}
+
+void CornerAStar::setup()
+{
+    GridPlanner::setup();
+    if (physics_)
+    {
+        if (!checker_)
+            throw ompl::Exception(getName(), "weights=physics needs gridcar's footprint validity checker (vehicle)");
+        weights_ = physicsWeights(checker_->vehicle());
+    }
+    else
+        weights_ = userWeights_;
+}
+
+std::size_t CornerAStar::stateCount() const { return std::size_t(width_) * height_ * 8; }
+
+void CornerAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
+{
+    const std::uint32_t cell = s / 8;
+    dir = int(s % 8);
+    col = int(cell % std::uint32_t(width_));
+    row = int(cell / std::uint32_t(width_));
+}
+
+std::vector<std::uint32_t> CornerAStar::startStates(const Query &q) const
+{
+    const std::uint32_t cell = std::uint32_t(q.startRow * width_ + q.startCol);
+    // the start state's yaw (nearest of 8 directions), or every direction at g = 0 when the
+    // start heading is free: the first move then costs no corner
+    if (q.startDir >= 0) return {cell * 8 + std::uint32_t(q.startDir)};
+    std::vector<std::uint32_t> all;
+    for (std::uint32_t d = 0; d < 8; ++d) all.push_back(cell * 8 + d);
+    return all;
+}
+
+SearchResult CornerAStar::runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
+                                    const ompl::base::PlannerTerminationCondition &ptc)
+{
+    const double turnCost[5] = {0.0, weights_.w45, weights_.w90, weights_.w135, 0.0};
+    CornerExpander ex{this, q, turnCost, width_};
+    return astar(*search_, starts, ex, [&] { return ptc.eval(); }, &progressExpanded_);
+}
+
+}  // namespace gridcar
