@@ -8,6 +8,7 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
+#include <chrono>
 #include <cmath>
 
 namespace gridcar
@@ -128,10 +129,10 @@ bool GridPlanner::checkMoveUncached(int col, int row, int d) const
     return si_->isValid(scratchA_) && si_->isValid(scratchB_) && si_->checkMotion(scratchA_, scratchB_);
 }
 
-bool GridPlanner::moveValid(int col, int row, int d) const
+bool GridPlanner::fillMoveCache(int col, int row, int d) const
 {
     std::uint8_t &c = moveCache_[(std::size_t(row) * width_ + col) * 8 + d];
-    if (c == 0) c = checkMoveUncached(col, row, d) ? 1 : 2;
+    c = checkMoveUncached(col, row, d) ? 1 : 2;
     return c == 1;
 }
 
@@ -197,7 +198,9 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     }
 
     const std::vector<std::uint32_t> starts = startStates(query_);
+    const auto t0 = std::chrono::steady_clock::now();
     const SearchResult res = runSearch(query_, starts, ptc);
+    lastSearchSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     lastExpanded_ = res.expanded;
     progressExpanded_ = res.expanded;
     if (res.outcome == SearchOutcome::Cancelled && res.closest == SearchSpace::kNoParent)
@@ -298,10 +301,9 @@ struct CellExpander
     double straight, diag;
     int goalCol, goalRow;
     bool goalKnown;
-    double heuristic(std::uint32_t s) const
+    double heuristicAt(int c, int r) const
     {
         if (h == GridHeuristic::Zero || !goalKnown) return 0.0;
-        const int c = int(s % std::uint32_t(W)), r = int(s / std::uint32_t(W));
         const int dx = std::abs(goalCol - c), dy = std::abs(goalRow - r);
         switch (h)
         {
@@ -311,6 +313,7 @@ struct CellExpander
             default: return 0.0;
         }
     }
+    double heuristic(std::uint32_t s) const { return heuristicAt(int(s % std::uint32_t(W)), int(s / std::uint32_t(W))); }
     bool isGoal(std::uint32_t s) const { return o.goalTest(int(s % std::uint32_t(W)), int(s / std::uint32_t(W)), -1); }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit) const
@@ -318,7 +321,10 @@ struct CellExpander
         const int c = int(s % std::uint32_t(W)), r = int(s / std::uint32_t(W));
         for (int d = 0; d < 8; ++d)
             if (o.move(c, r, d))
-                emit(std::uint32_t((r + Moves::drow[d]) * W + c + Moves::dcol[d]), (d & 1) ? diag : straight);
+            {
+                const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
+                emit(std::uint32_t(nr * W + nc), (d & 1) ? diag : straight, heuristicAt(nc, nr));
+            }
     }
 };
 }  // namespace
@@ -384,8 +390,9 @@ struct CornerExpander
         {
             const int t = Moves::turn(dir, d);
             if (t == 4 || !self->moveValid(c, r, d)) continue;  // never a reversal
-            const std::uint32_t next = std::uint32_t((r + Moves::drow[d]) * W + c + Moves::dcol[d]) * 8 + std::uint32_t(d);
-            emit(next, self->stepLength(d) + turnCost[t]);
+            const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
+            const std::uint32_t next = std::uint32_t(nr * W + nc) * 8 + std::uint32_t(d);
+            emit(next, self->stepLength(d) + turnCost[t], q.goalIsState ? self->octile(nc, nr, q.goalCol, q.goalRow) : 0.0);
         }
     }
 };

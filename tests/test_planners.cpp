@@ -153,6 +153,7 @@ TEST_P(Conformance, TimeLimitIsHonoured)
     const auto t0 = std::chrono::steady_clock::now();
     const ob::PlannerStatus st = s.ss->solve(limit);
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("%s: solve(%.2f) returned after %.3f s (%s)\n", GetParam().c_str(), limit, took, st.asString().c_str());
     EXPECT_LT(took, limit + 0.1) << GetParam() << " status " << st.asString();
     EXPECT_NE(st, ob::PlannerStatus::EXACT_SOLUTION) << "the search should not finish in 50 ms";
 }

@@ -3,6 +3,7 @@
 // gridcar::InputError (exit 2) for bad input.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace gridcar::cli
 {
@@ -41,4 +42,34 @@ struct DemoOptions
 };
 int runDemo(const DemoOptions &o);
 
+}  // namespace gridcar::cli
+
+namespace gridcar::cli
+{
+struct PlanOptions
+{
+    std::string map;
+    std::string planner;
+    std::string start, startCell, goal, goalCell;
+    std::string vehicle{"paper-i"};
+    std::vector<std::string> params;
+    double timeLimit{10.0};
+    bool json{false};
+    bool unknownFree{false};
+    std::string outCsv;
+    std::string png;
+};
+/// Exit status: 0 exact solution, 3 planned without an exact solution (timeout / approximate).
+int runPlan(const PlanOptions &o);
+
+struct ScenOptions
+{
+    std::string map, scen;
+    std::string planner{"astar-octile"};
+    std::string vehicle{"point"};
+    std::size_t limit{0};  ///< 0: all
+    bool json{false};
+};
+/// Exit status: 0 every path matched the published optimal length, 3 otherwise.
+int runScen(const ScenOptions &o);
 }  // namespace gridcar::cli

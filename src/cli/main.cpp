@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include <CLI/CLI.hpp>
+#include <ompl/util/Exception.h>
 
 int main(int argc, char **argv)
 {
@@ -43,6 +44,43 @@ int main(int argc, char **argv)
     cDemo->add_option("--vehicle", demo.vehicle, "Vehicle preset (paper-i, paper-c-car, paper-c-robot, point) or YAML file")
         ->capture_default_str();
 
+    PlanOptions plan;
+    auto *cPlan = app.add_subcommand("plan", "Plan one path on a map with a grid planner or an OMPL planner");
+    cPlan->add_option("--map", plan.map, "Map file")->required();
+    cPlan->add_option("--planner", plan.planner,
+                      "dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar, rrt, rrtconnect, "
+                      "rrtstar, prm, prmstar, lazyprmstar, bitstar, informedrrtstar")
+        ->required();
+    cPlan->add_option("--start", plan.start, "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: "
+                                             "free start heading");
+    cPlan->add_option("--start-cell", plan.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row)");
+    cPlan->add_option("--goal", plan.goal, "Goal X,Y[,YAW_DEG] (the goal heading counts only with "
+                                           "--param match_goal_heading=1)");
+    cPlan->add_option("--goal-cell", plan.goalCell, "Goal COL,ROW[,HEADING_DEG]");
+    cPlan->add_option("--vehicle", plan.vehicle, "paper-i, paper-c-car, paper-c-robot, point, or a YAML file")
+        ->capture_default_str();
+    cPlan->add_option("--param", plan.params, "NAME=VALUE: set a declared planner parameter (repeatable)");
+    cPlan->add_option("--time-limit", plan.timeLimit, "Seconds")->capture_default_str();
+    cPlan->add_flag("--json", plan.json,
+                    "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, "
+                    "min_clearance, time, path [[x, y, yaw_rad], ...]");
+    cPlan->add_flag("--unknown-free", plan.unknownFree, "Treat unknown cells as free");
+    cPlan->add_option("--out", plan.outCsv, "Write the path as CSV (x,y,yaw)");
+    cPlan->add_option("--png", plan.png, "Write a picture of the map, the path and the expanded cells");
+    cPlan->footer("Exit status: 0 exact solution, 3 no exact solution (timeout / approximate), 2 bad input "
+                  "(including a start or goal off the map or in collision), 1 internal error.");
+
+    ScenOptions scen;
+    auto *cScen = app.add_subcommand("scen", "Run a Moving AI scenario file and compare with the published optimal lengths");
+    cScen->add_option("--map", scen.map, "Moving AI .map file")->required();
+    cScen->add_option("--scen", scen.scen, "Moving AI .scen file")->required();
+    cScen->add_option("--planner", scen.planner, "Planner name")->capture_default_str();
+    cScen->add_option("--vehicle", scen.vehicle, "Vehicle preset or YAML file")->capture_default_str();
+    cScen->add_option("--limit", scen.limit, "Only the first N scenarios (0: all)")->capture_default_str();
+    cScen->add_flag("--json", scen.json, "Print one JSON object with the counts and speeds");
+    cScen->footer("Lengths match when within max(1e-3, 1e-5 x length). Exit status: 0 all matched, 3 some did not, "
+                  "2 bad input.");
+
     try
     {
         app.parse(argc, argv);
@@ -66,6 +104,8 @@ int main(int argc, char **argv)
         if (*cInfo) return runInfo(info);
         if (*cGen) return runGenmap(gen);
         if (*cDemo) return runDemo(demo);
+        if (*cPlan) return runPlan(plan);
+        if (*cScen) return runScen(scen);
     }
     catch (const gridcar::MapLoadError &e)
     {
@@ -78,6 +118,11 @@ int main(int argc, char **argv)
         return 2;
     }
     catch (const std::invalid_argument &e)
+    {
+        std::fprintf(stderr, "gridcar: error: %s\n", e.what());
+        return 2;
+    }
+    catch (const ompl::Exception &e)
     {
         std::fprintf(stderr, "gridcar: error: %s\n", e.what());
         return 2;

@@ -76,6 +76,8 @@ public:
     std::uint64_t expandedNodes() const { return lastExpanded_; }
     /// The planner's own search cost of the last solution (metres, incl. any penalties).
     double lastCost() const { return lastCost_; }
+    /// Seconds spent in the search loop itself by the last solve() (no path building).
+    double lastSearchSeconds() const { return lastSearchSeconds_; }
     /// Cells expanded by the last solve() (for pictures).
     std::vector<Cell> expandedCells() const;
 
@@ -94,7 +96,12 @@ public:
     /// True if the cell (with arrival direction @p dir, -1 = none) satisfies the goal.
     bool isGoal(int col, int row, int dir) const;
     /// Cached validity of the move from (col, row) in direction d (see the class comment).
-    bool moveValid(int col, int row, int d) const;
+    bool moveValid(int col, int row, int d) const
+    {
+        const std::uint8_t c = moveCache_[(std::size_t(row) * std::size_t(width_) + std::size_t(col)) * 8 + std::size_t(d)];
+        if (c != 0) return c == 1;
+        return fillMoveCache(col, row, d);
+    }
     /// Step length of direction d in metres (resolution or resolution * sqrt 2).
     double stepLength(int d) const { return (d & 1) ? diagStep_ : straightStep_; }
     /// Octile distance in metres between two cells (admissible for 8-connected moves).
@@ -122,6 +129,7 @@ protected:
 
 private:
     bool checkMoveUncached(int col, int row, int d) const;
+    bool fillMoveCache(int col, int row, int d) const;
     bool poseValid(double x, double y, double yaw) const;
 
     bool allowCornerCutting_{false};
@@ -131,6 +139,7 @@ private:
     mutable std::vector<std::uint8_t> moveCache_;  ///< per (cell, d): 0 unknown, 1 valid, 2 invalid
     std::uint64_t lastExpanded_{0};
     double lastCost_{0.0};
+    double lastSearchSeconds_{0.0};
     std::vector<std::uint32_t> lastPath_;
     ompl::base::State *scratchA_{nullptr}, *scratchB_{nullptr};
     void freeDataStates();

@@ -1,0 +1,48 @@
+#pragma once
+/// @file PathMetrics.h
+/// @brief Path measures shared by the CLI, the benchmarks and the simulation.
+
+#include "gridcar/collision/FootprintChecker.h"
+
+#include <vector>
+
+namespace gridcar
+{
+/// Parameters of the turn count (see computePathMetrics()).
+struct TurnParams
+{
+    double sampleStep{0.25};    ///< m, resampling step
+    double window{3.0};         ///< m, chord length before / after each sample
+    double thresholdDeg{15.0};  ///< a turn: net heading change above this over the window
+};
+
+/// Measures of a path of poses (only positions matter except for clearance).
+struct PathMetrics
+{
+    double length{0.0};         ///< m, sum of segment lengths
+    int turns{0};               ///< number of turns (see computePathMetrics())
+    double maxTurnDeg{0.0};     ///< largest heading change at one turning point, degrees
+    int turningPoints{0};       ///< vertices where the heading changes (collinear ones removed)
+    double minClearance{0.0};   ///< m, FootprintChecker::clearance minimum along the path
+};
+
+/**
+ * @brief Length, turns, max turning angle and clearance of a path.
+ *
+ * - Turning points: vertices left after dropping repeated and collinear points (heading
+ *   change below 1e-6 rad); maxTurnDeg is the largest heading change at one of them (paper I's
+ *   "maximum turning angle").
+ * - Turns: the path is resampled every TurnParams::sampleStep metres; at each sample the
+ *   direction of the chord over the TurnParams::window metres before it is compared with the
+ *   chord over the window after it; a turn is a maximal stretch of samples where they differ
+ *   by more than TurnParams::thresholdDeg. So a 90-degree corner is one turn whether it is a
+ *   sharp grid corner or a smooth arc, while a grid staircase (E, NE, E, NE, ...) or a zigzag
+ *   around a straight line is no turn. Corners closer than one window to either end of the
+ *   path are not counted.
+ * - Clearance: FootprintChecker::clearance at the path's poses and at points every half cell
+ *   along each segment (yaw of the segment); 0 if any of them collides.
+ */
+PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintChecker *checker,
+                               const TurnParams &turnParams = TurnParams());
+
+}  // namespace gridcar

@@ -1,0 +1,296 @@
+// gridcar plan / gridcar scen.
+#include "Commands.h"
+
+#include "gridcar/io/Render.h"
+#include "gridcar/map/MapIO.h"
+#include "gridcar/path/PathMetrics.h"
+#include "gridcar/planners/GridPlanner.h"
+#include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/spaces/OmplAdapters.h"
+#include "gridcar/spaces/Setup.h"
+
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace gridcar::cli
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+/// "A,B[,C]" -> numbers; throws InputError naming the option.
+std::vector<double> parseNumbers(const std::string &text, const std::string &option, std::size_t minN, std::size_t maxN)
+{
+    std::vector<double> v;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ','))
+    {
+        std::size_t used = 0;
+        double x;
+        try
+        {
+            x = std::stod(item, &used);
+        }
+        catch (const std::exception &)
+        {
+            throw InputError(option + " '" + text + "': '" + item + "' is not a number");
+        }
+        if (used != item.size() && item.find_first_not_of(" \t", used) != std::string::npos)
+            throw InputError(option + " '" + text + "': '" + item + "' is not a number");
+        if (!std::isfinite(x)) throw InputError(option + " '" + text + "': values must be finite");
+        v.push_back(x);
+    }
+    if (v.size() < minN || v.size() > maxN)
+        throw InputError(option + " '" + text + "': expected " + std::to_string(minN) +
+                         (maxN > minN ? " or " + std::to_string(maxN) : std::string()) + " comma-separated numbers");
+    return v;
+}
+
+/// A pose from --start/--goal (world X,Y[,YAW_DEG]) or --start-cell/--goal-cell (COL,ROW[,DEG]).
+Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,
+                bool &hasYaw)
+{
+    if (world.empty() == cell.empty())
+        throw InputError("give exactly one of --" + which + " X,Y[,YAW_DEG] and --" + which + "-cell COL,ROW[,HEADING_DEG]");
+    Pose2 p;
+    if (!world.empty())
+    {
+        const auto v = parseNumbers(world, "--" + which, 2, 3);
+        p = {v[0], v[1], v.size() == 3 ? v[2] * M_PI / 180.0 : 0.0};
+        hasYaw = v.size() == 3;
+    }
+    else
+    {
+        const auto v = parseNumbers(cell, "--" + which + "-cell", 2, 3);
+        if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+            throw InputError("--" + which + "-cell: column and row must be integers");
+        if (!g.inBounds(int(v[0]), int(v[1])) || std::abs(v[0]) > 1e9 || std::abs(v[1]) > 1e9)
+            throw InputError("--" + which + "-cell " + cell + " is outside the " + std::to_string(g.width()) + " x " +
+                             std::to_string(g.height()) + " map");
+        p = {g.cellCenterX(int(v[0])), g.cellCenterY(int(v[1])), v.size() == 3 ? v[2] * M_PI / 180.0 : 0.0};
+        hasYaw = v.size() == 3;
+    }
+    p.yaw = GridSE2StateSpace::wrapYaw(p.yaw);
+    return p;
+}
+
+std::string describe(const Pose2 &p)
+{
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "(%.3f, %.3f, %.1f deg)", p.x, p.y, p.yaw * 180.0 / M_PI);
+    return buf;
+}
+
+VehicleParams loadVehicle(const std::string &v)
+{
+    try
+    {
+        return VehicleParams::fromNameOrFile(v);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        throw InputError(e.what());
+    }
+}
+
+void applyParams(ompl::base::Planner &planner, const std::vector<std::string> &params)
+{
+    for (const auto &kv : params)
+    {
+        const auto eq = kv.find('=');
+        if (eq == std::string::npos || eq == 0) throw InputError("--param '" + kv + "': expected NAME=VALUE");
+        const std::string name = kv.substr(0, eq), value = kv.substr(eq + 1);
+        if (!planner.params().hasParam(name))
+        {
+            std::vector<std::string> names;
+            planner.params().getParamNames(names);
+            std::string list;
+            for (const auto &n : names) list += (list.empty() ? "" : ", ") + n;
+            throw InputError("planner " + planner.getName() + " has no parameter '" + name + "' (its parameters: " +
+                             list + ")");
+        }
+        bool ok = false;
+        try
+        {
+            ok = planner.params().setParam(name, value);
+        }
+        catch (const std::exception &e)
+        {
+            throw InputError("--param " + kv + ": " + e.what());
+        }
+        if (!ok) throw InputError("--param " + kv + ": value not accepted");
+    }
+}
+}  // namespace
+
+int runPlan(const PlanOptions &o)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    if (!(o.timeLimit > 0.0) || !std::isfinite(o.timeLimit) || o.timeLimit > 86400)
+        throw InputError("--time-limit must be a positive number of seconds (at most a day)");
+    auto grid = std::make_shared<OccupancyGrid>(loadMap(o.map));
+    grid->setUnknownIsFree(o.unknownFree);
+    const VehicleParams vehicle = loadVehicle(o.vehicle);
+    bool startYaw = false, goalYaw = false;
+    const Pose2 start = parsePose(o.start, o.startCell, "start", *grid, startYaw);
+    const Pose2 goal = parsePose(o.goal, o.goalCell, "goal", *grid, goalYaw);
+    GridSetup setup = makeGridSetup(grid, vehicle);
+    ompl::base::PlannerPtr planner;
+    try
+    {
+        planner = makePlanner(setup.ss->getSpaceInformation(), o.planner);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        throw InputError(e.what());
+    }
+    if (!startYaw && planner->params().hasParam("free_start_heading")) planner->params().setParam("free_start_heading", "1");
+    applyParams(*planner, o.params);
+
+    nlohmann::json j;
+    j["planner"] = o.planner;
+    auto fail = [&](const std::string &status, const std::string &msg) {
+        if (o.json)
+        {
+            j["status"] = status;
+            j["error"] = msg;
+            std::cout << j.dump() << "\n";
+        }
+        throw InputError(msg);
+    };
+    // the same checks for every planner (OMPL's own planners do not all check the goal)
+    auto whyInvalid = [&](const Pose2 &p) {
+        const Cell c = grid->worldToCell(p.x, p.y);
+        return grid->inBounds(c.col, c.row) ? "in collision for vehicle " + vehicle.name : std::string("outside the map");
+    };
+    if (!setup.checker->isValid(start)) fail("Invalid start", "start " + describe(start) + " is " + whyInvalid(start));
+    if (!setup.checker->isValid(goal)) fail("Invalid goal", "goal " + describe(goal) + " is " + whyInvalid(goal));
+    setup.setStartAndGoal(start, goal);
+    setup.ss->setPlanner(planner);
+    const auto t0 = Clock::now();
+    const ompl::base::PlannerStatus status = setup.ss->solve(o.timeLimit);
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+
+    std::vector<Pose2> path;
+    if (setup.ss->haveSolutionPath())
+        for (const auto *s : setup.ss->getSolutionPath().getStates()) path.push_back(toPose(s));
+    const PathMetrics m = computePathMetrics(path, setup.checker.get());
+    auto *gp = dynamic_cast<GridPlanner *>(planner.get());
+    j["status"] = status.asString();
+    j["cost"] = gp ? gp->lastCost() : m.length;
+    j["length"] = m.length;
+    j["expanded"] = gp ? gp->expandedNodes() : 0;
+    j["turns"] = m.turns;
+    j["max_turn_deg"] = m.maxTurnDeg;
+    j["min_clearance"] = m.minClearance;
+    j["time"] = seconds;
+    j["vehicle"] = vehicle.name;
+    nlohmann::json jp = nlohmann::json::array();
+    for (const Pose2 &p : path) jp.push_back({p.x, p.y, p.yaw});
+    j["path"] = jp;
+    if (o.json)
+        std::cout << j.dump() << "\n";
+    else
+    {
+        std::printf("%s: %s in %.3f s\n", o.planner.c_str(), status.asString().c_str(), seconds);
+        std::printf("  length %.2f m, cost %.2f, %d poses, %d turns, max turn %.1f deg, min clearance %.2f m",
+                    m.length, double(j["cost"]), int(path.size()), m.turns, m.maxTurnDeg, m.minClearance);
+        if (gp) std::printf(", %llu nodes expanded", (unsigned long long)gp->expandedNodes());
+        std::printf("\n");
+    }
+    if (!o.outCsv.empty())
+    {
+        std::ofstream f(o.outCsv);
+        if (!f) throw InputError("cannot write " + o.outCsv);
+        f << "x,y,yaw\n";
+        f.precision(10);
+        for (const Pose2 &p : path) f << p.x << "," << p.y << "," << p.yaw << "\n";
+    }
+    if (!o.png.empty())
+    {
+        MapCanvas canvas(*grid);
+        if (gp) canvas.tintCells(gp->expandedCells(), {170, 200, 255});
+        std::vector<std::pair<double, double>> pts;
+        for (const Pose2 &p : path) pts.push_back({p.x, p.y});
+        canvas.polyline(pts, {220, 30, 30}, 2);
+        canvas.disc(start.x, start.y, 4, {0, 160, 0});
+        canvas.disc(goal.x, goal.y, 4, {0, 0, 200});
+        canvas.save(o.png);
+    }
+    return status == ompl::base::PlannerStatus::EXACT_SOLUTION ? 0 : 3;
+}
+
+int runScen(const ScenOptions &o)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    auto grid = std::make_shared<const OccupancyGrid>(loadMovingAiMap(o.map));
+    const auto scen = loadScenario(o.scen);
+    const VehicleParams vehicle = loadVehicle(o.vehicle);
+    GridSetup setup = makeGridSetup(grid, vehicle);
+    ompl::base::PlannerPtr planner;
+    try
+    {
+        planner = makePlanner(setup.ss->getSpaceInformation(), o.planner);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        throw InputError(e.what());
+    }
+    auto *gp = dynamic_cast<GridPlanner *>(planner.get());
+    setup.ss->setPlanner(planner);
+    const std::size_t n = o.limit ? std::min(o.limit, scen.size()) : scen.size();
+    std::size_t matched = 0, solved = 0;
+    std::uint64_t expanded = 0;
+    double seconds = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const auto &e = scen[i];
+        if (e.mapWidth != grid->width() || e.mapHeight != grid->height())
+            throw InputError(o.scen + ": line " + std::to_string(i + 2) + " is for a " + std::to_string(e.mapWidth) +
+                             " x " + std::to_string(e.mapHeight) + " map, not this one");
+        setup.ss->clear();
+        setup.setStartAndGoal({grid->cellCenterX(e.startX), grid->cellCenterY(e.startY), 0.0},
+                              {grid->cellCenterX(e.goalX), grid->cellCenterY(e.goalY), 0.0});
+        const auto t0 = Clock::now();
+        const auto st = setup.ss->solve(60.0);
+        seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+        if (st != ompl::base::PlannerStatus::EXACT_SOLUTION) continue;
+        ++solved;
+        const double len = gp ? gp->lastCost() : setup.ss->getSolutionPath().length();
+        if (gp) expanded += gp->expandedNodes();
+        if (std::abs(len - e.optimalLength) <= std::max(1e-3, 1e-5 * e.optimalLength)) ++matched;
+        if ((i + 1) % 500 == 0) std::fprintf(stderr, "[scen] %zu / %zu queries\n", i + 1, n);
+    }
+    if (o.json)
+    {
+        nlohmann::json j;
+        j["map"] = o.map;
+        j["planner"] = o.planner;
+        j["queries"] = n;
+        j["solved"] = solved;
+        j["matched"] = matched;
+        j["seconds"] = seconds;
+        j["queries_per_s"] = seconds > 0 ? n / seconds : 0.0;
+        j["expanded"] = expanded;
+        j["expansions_per_s"] = seconds > 0 ? expanded / seconds : 0.0;
+        std::cout << j.dump() << "\n";
+    }
+    else
+        std::printf("%s with %s: %zu / %zu paths match the published optimal length (%zu solved); %.3f ms per query, "
+                    "%.2f M expansions/s\n",
+                    o.map.c_str(), o.planner.c_str(), matched, n, solved, n ? 1000.0 * seconds / n : 0.0,
+                    seconds > 0 ? expanded / seconds / 1e6 : 0.0);
+    return matched == n ? 0 : 3;
+}
+
+}  // namespace gridcar::cli

@@ -1,0 +1,96 @@
+#include "gridcar/path/PathMetrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gridcar
+{
+namespace
+{
+double wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
+double dist(const Pose2 &a, const Pose2 &b) { return std::hypot(b.x - a.x, b.y - a.y); }
+}  // namespace
+
+PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintChecker *checker, const TurnParams &tp)
+{
+    PathMetrics m;
+    if (path.empty()) return m;
+    // distinct points
+    std::vector<Pose2> pts;
+    for (const Pose2 &p : path)
+        if (pts.empty() || dist(p, pts.back()) > 1e-9) pts.push_back(p);
+    for (std::size_t i = 1; i < pts.size(); ++i) m.length += dist(pts[i - 1], pts[i]);
+
+    // turning points and the largest heading change at one of them
+    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
+    {
+        const double h0 = std::atan2(pts[i].y - pts[i - 1].y, pts[i].x - pts[i - 1].x);
+        const double h1 = std::atan2(pts[i + 1].y - pts[i].y, pts[i + 1].x - pts[i].x);
+        const double d = std::abs(wrap(h1 - h0));
+        if (d > 1e-6)
+        {
+            ++m.turningPoints;
+            m.maxTurnDeg = std::max(m.maxTurnDeg, d * 180.0 / M_PI);
+        }
+    }
+
+    // turns: resample by arc length, compare the chord over the window before each sample
+    // with the chord over the window after it
+    if (pts.size() >= 2 && m.length > 0)
+    {
+        std::vector<Pose2> res;
+        std::size_t seg = 1;
+        double segStart = 0.0;
+        const int n = int(std::floor(m.length / tp.sampleStep)) + 1;
+        for (int k = 0; k < n; ++k)
+        {
+            const double s = std::min(m.length, k * tp.sampleStep);
+            while (seg + 1 < pts.size() && segStart + dist(pts[seg - 1], pts[seg]) < s)
+            {
+                segStart += dist(pts[seg - 1], pts[seg]);
+                ++seg;
+            }
+            const double len = dist(pts[seg - 1], pts[seg]);
+            const double t = len > 0 ? std::clamp((s - segStart) / len, 0.0, 1.0) : 0.0;
+            res.push_back({pts[seg - 1].x + t * (pts[seg].x - pts[seg - 1].x),
+                           pts[seg - 1].y + t * (pts[seg].y - pts[seg - 1].y), 0.0});
+        }
+        const int w = std::max(1, int(std::lround(tp.window / tp.sampleStep)));
+        const double thr = tp.thresholdDeg * M_PI / 180.0;
+        bool inTurn = false;
+        for (int k = w; k + w < int(res.size()); ++k)
+        {
+            const double a1 = std::atan2(res[k].y - res[k - w].y, res[k].x - res[k - w].x);
+            const double a2 = std::atan2(res[k + w].y - res[k].y, res[k + w].x - res[k].x);
+            const bool turning = std::abs(wrap(a2 - a1)) > thr;
+            if (turning && !inTurn) ++m.turns;
+            inTurn = turning;
+        }
+    }
+
+    // clearance along the path
+    if (checker)
+    {
+        double best = std::numeric_limits<double>::infinity();
+        const double step = checker->grid().resolution() / 2;
+        for (std::size_t i = 0; i < pts.size(); ++i)
+        {
+            best = std::min(best, checker->clearance(pts[i].x, pts[i].y, pts[i].yaw));
+            if (i + 1 == pts.size()) break;
+            const double len = dist(pts[i], pts[i + 1]);
+            const double yaw = std::atan2(pts[i + 1].y - pts[i].y, pts[i + 1].x - pts[i].x);
+            const int k = int(std::ceil(len / step));
+            for (int j = 1; j < k; ++j)
+            {
+                const double t = double(j) / k;
+                best = std::min(best, checker->clearance(pts[i].x + t * (pts[i + 1].x - pts[i].x),
+                                                         pts[i].y + t * (pts[i + 1].y - pts[i].y), yaw));
+            }
+        }
+        m.minClearance = std::isfinite(best) ? best : 0.0;
+    }
+    return m;
+}
+
+}  // namespace gridcar
