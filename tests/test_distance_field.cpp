@@ -34,6 +34,18 @@ double bruteForce(const OccupancyGrid &g, int c, int r)
                 best = std::min(best, std::hypot(double(cc - c), double(rr - r)));
     return best * g.resolution();
 }
+/// Two separate walls (rows 0 and 20, columns 5..74), unknown free: a corridor 19 cells wide.
+OccupancyGrid corridor()
+{
+    OccupancyGrid g(80, 21, 0.2);
+    g.setUnknownIsFree(true);
+    for (int c = 5; c < 75; ++c)
+    {
+        g.set(c, 0, CellState::Occupied);
+        g.set(c, 20, CellState::Occupied);
+    }
+    return g;
+}
 }  // namespace
 
 TEST(DistanceField, ExactAgainstBruteForceOnRandomGrids)
@@ -87,14 +99,7 @@ TEST(DistanceField, BilinearInterpolationAndGradient)
 
 TEST(DistanceField, VoronoiIsTheCorridorCentreline)
 {
-    // corridor between two separate walls (rows 0 and 20), unknown free, border-free sides
-    OccupancyGrid g(80, 21, 0.2);
-    g.setUnknownIsFree(true);
-    for (int c = 5; c < 75; ++c)
-    {
-        g.set(c, 0, CellState::Occupied);
-        g.set(c, 20, CellState::Occupied);
-    }
+    const OccupancyGrid g = corridor();
     const DistanceField f(g);
     ASSERT_GT(f.voronoiCellCount(), 0u);
     // in the middle of the corridor the GVD lies on row 10 (equidistant), one cell thick
@@ -116,13 +121,7 @@ TEST(DistanceField, VoronoiIsTheCorridorCentreline)
 
 TEST(DistanceField, VoronoiFieldFollowsDolgov)
 {
-    OccupancyGrid g(80, 21, 0.2);
-    g.setUnknownIsFree(true);
-    for (int c = 5; c < 75; ++c)
-    {
-        g.set(c, 0, CellState::Occupied);
-        g.set(c, 20, CellState::Occupied);
-    }
+    const OccupancyGrid g = corridor();
     const DistanceField f(g);
     VoronoiFieldParams p;
     p.alpha = 1.0;

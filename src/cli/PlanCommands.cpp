@@ -103,6 +103,18 @@ VehicleParams loadVehicle(const std::string &v)
     }
 }
 
+ompl::base::PlannerPtr plannerByName(const GridSetup &setup, const std::string &name)
+{
+    try
+    {
+        return makePlanner(setup.ss->getSpaceInformation(), name);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        throw InputError(e.what());
+    }
+}
+
 void applyParams(ompl::base::Planner &planner, const std::vector<std::string> &params)
 {
     for (const auto &kv : params)
@@ -145,15 +157,7 @@ int runPlan(const PlanOptions &o)
     const Pose2 start = parsePose(o.start, o.startCell, "start", *grid, startYaw);
     const Pose2 goal = parsePose(o.goal, o.goalCell, "goal", *grid, goalYaw);
     GridSetup setup = makeGridSetup(grid, vehicle);
-    ompl::base::PlannerPtr planner;
-    try
-    {
-        planner = makePlanner(setup.ss->getSpaceInformation(), o.planner);
-    }
-    catch (const std::invalid_argument &e)
-    {
-        throw InputError(e.what());
-    }
+    const ompl::base::PlannerPtr planner = plannerByName(setup, o.planner);
     if (!startYaw && planner->params().hasParam("free_start_heading")) planner->params().setParam("free_start_heading", "1");
     applyParams(*planner, o.params);
 
@@ -237,15 +241,7 @@ int runScen(const ScenOptions &o)
     const auto scen = loadScenario(o.scen);
     const VehicleParams vehicle = loadVehicle(o.vehicle);
     GridSetup setup = makeGridSetup(grid, vehicle);
-    ompl::base::PlannerPtr planner;
-    try
-    {
-        planner = makePlanner(setup.ss->getSpaceInformation(), o.planner);
-    }
-    catch (const std::invalid_argument &e)
-    {
-        throw InputError(e.what());
-    }
+    const ompl::base::PlannerPtr planner = plannerByName(setup, o.planner);
     auto *gp = dynamic_cast<GridPlanner *>(planner.get());
     setup.ss->setPlanner(planner);
     const std::size_t n = o.limit ? std::min(o.limit, scen.size()) : scen.size();

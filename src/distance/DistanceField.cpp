@@ -207,40 +207,42 @@ DistanceField::DistanceField(const OccupancyGrid &grid)
         vdist_.assign(N, std::numeric_limits<float>::infinity());
 }
 
-double DistanceField::distance(double x, double y) const
+bool DistanceField::bilinearCorners(double x, double y, double corner[4], double &fu, double &fv) const
 {
-    const double u = (x - originX_) / resolution_ - 0.5;     // column-centre coordinates
-    const double v = (y - originY_) / resolution_ - 0.5;     // from the bottom
-    if (!(u >= -0.5 && v >= -0.5 && u <= width_ - 0.5 && v <= height_ - 0.5)) return 0.0;
+    const double u = (x - originX_) / resolution_ - 0.5;  // column-centre coordinates
+    const double v = (y - originY_) / resolution_ - 0.5;  // from the bottom
+    if (!(u >= -0.5 && v >= -0.5 && u <= width_ - 0.5 && v <= height_ - 0.5)) return false;
     const int c0 = int(std::floor(u)), v0 = int(std::floor(v));
-    const double fu = u - c0, fv = v - v0;
+    fu = u - c0;
+    fv = v - v0;
+    // past the outermost cell centres, clamp to the edge cell (it already carries its
+    // distance to the border obstacle half a cell beyond)
     auto at = [&](int c, int vv) {
-        // outside the map rows/cols, clamp to the edge cell (the border obstacle is half a cell
-        // beyond; the edge cell already carries its distance)
         c = std::clamp(c, 0, width_ - 1);
         vv = std::clamp(vv, 0, height_ - 1);
         return double(dist_[idx(c, height_ - 1 - vv)]);
     };
-    const double a = at(c0, v0), b = at(c0 + 1, v0), cc = at(c0, v0 + 1), d = at(c0 + 1, v0 + 1);
-    return (1 - fv) * ((1 - fu) * a + fu * b) + fv * ((1 - fu) * cc + fu * d);
+    corner[0] = at(c0, v0);
+    corner[1] = at(c0 + 1, v0);
+    corner[2] = at(c0, v0 + 1);
+    corner[3] = at(c0 + 1, v0 + 1);
+    return true;
+}
+
+double DistanceField::distance(double x, double y) const
+{
+    double k[4], fu, fv;
+    if (!bilinearCorners(x, y, k, fu, fv)) return 0.0;
+    return (1 - fv) * ((1 - fu) * k[0] + fu * k[1]) + fv * ((1 - fu) * k[2] + fu * k[3]);
 }
 
 void DistanceField::gradient(double x, double y, double &gx, double &gy) const
 {
     gx = gy = 0.0;
-    const double u = (x - originX_) / resolution_ - 0.5;
-    const double v = (y - originY_) / resolution_ - 0.5;
-    if (!(u >= -0.5 && v >= -0.5 && u <= width_ - 0.5 && v <= height_ - 0.5)) return;
-    const int c0 = int(std::floor(u)), v0 = int(std::floor(v));
-    const double fu = u - c0, fv = v - v0;
-    auto at = [&](int c, int vv) {
-        c = std::clamp(c, 0, width_ - 1);
-        vv = std::clamp(vv, 0, height_ - 1);
-        return double(dist_[idx(c, height_ - 1 - vv)]);
-    };
-    const double a = at(c0, v0), b = at(c0 + 1, v0), cc = at(c0, v0 + 1), d = at(c0 + 1, v0 + 1);
-    gx = ((1 - fv) * (b - a) + fv * (d - cc)) / resolution_;
-    gy = ((1 - fu) * (cc - a) + fu * (d - b)) / resolution_;
+    double k[4], fu, fv;
+    if (!bilinearCorners(x, y, k, fu, fv)) return;
+    gx = ((1 - fv) * (k[1] - k[0]) + fv * (k[3] - k[2])) / resolution_;
+    gy = ((1 - fu) * (k[2] - k[0]) + fu * (k[3] - k[1])) / resolution_;
 }
 
 double DistanceField::voronoiDistance(double x, double y) const

@@ -89,6 +89,8 @@ public:
     double voronoiField(double x, double y, const VoronoiFieldParams &p = VoronoiFieldParams()) const;
 
 private:
+    /// d_O at the four cell centres around (x, y) and the fractions between them; false off the map.
+    bool bilinearCorners(double x, double y, double corner[4], double &fu, double &fv) const;
     std::size_t idx(int col, int row) const { return std::size_t(row) * std::size_t(width_) + std::size_t(col); }
 
     int width_{0}, height_{0};
