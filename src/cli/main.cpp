@@ -13,7 +13,7 @@
 int main(int argc, char **argv)
 {
     using namespace gridcar::cli;
-    CLI::App app{"gridcar: vehicle-aware grid planners for OMPL (corner-weighted A*, improved A*).\n"
+    CLI::App app{"gridcar: vehicle-aware grid planners for OMPL (grid A* baselines, corner-weighted A*).\n"
                  "Maps: ROS map_server .yaml (+ PGM/PNG), Moving AI .map, plain .ppm/.pgm/.png (dark = occupied)."};
     app.require_subcommand(1);
 
@@ -51,8 +51,8 @@ int main(int argc, char **argv)
                       "dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar, rrt, rrtconnect, "
                       "rrtstar, prm, prmstar, lazyprmstar, bitstar, informedrrtstar")
         ->required();
-    cPlan->add_option("--start", plan.start, "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: "
-                                             "free start heading");
+    cPlan->add_option("--start", plan.start, "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: free start heading for the grid "
+                                             "planners (OMPL planners start at yaw 0)");
     cPlan->add_option("--start-cell", plan.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row)");
     cPlan->add_option("--goal", plan.goal, "Goal X,Y[,YAW_DEG] (the goal heading counts only with "
                                            "--param match_goal_heading=1)");
