@@ -332,7 +332,6 @@ struct CellExpander
 GridAStar::GridAStar(const ompl::base::SpaceInformationPtr &si, GridHeuristic h, const std::string &name)
   : GridPlanner(si, name), heuristic_(h)
 {
-    specs_.optimizingPaths = false;
 }
 
 std::size_t GridAStar::stateCount() const { return std::size_t(width_) * height_; }

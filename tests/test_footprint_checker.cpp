@@ -42,8 +42,7 @@ bool bruteCollides(const FootprintChecker &fc, double x, double y, double yaw, b
             if (!g.isBlocked(c, row)) continue;
             const double sx0 = g.originX() + c * res, sy0 = g.originY() + v * res;
             const double sqx[4] = {sx0, sx0 + res, sx0 + res, sx0}, sqy[4] = {sy0, sy0, sy0 + res, sy0 + res};
-            double minGap = 1e300;  // largest separation over axes (positive = separated)
-            double sep = -1e300;
+            double sep = -1e300;  // largest separation over the four axes (positive = apart)
             for (const auto &a : axes)
             {
                 double p0 = 1e300, p1 = -1e300, q0 = 1e300, q1 = -1e300;
@@ -57,7 +56,6 @@ bool bruteCollides(const FootprintChecker &fc, double x, double y, double yaw, b
                 }
                 sep = std::max(sep, std::max(q0 - p1, p0 - q1));
             }
-            (void)minGap;
             if (std::abs(sep) <= 1e-9) ambiguous = true;
             if (sep < 0) hit = true;
         }
