@@ -73,3 +73,23 @@ TEST(OccupancyGrid, ResampleIsConservative)
     EXPECT_EQ(r.at(0, 1), CellState::Free);
     EXPECT_DOUBLE_EQ(r.resolution(), 0.3);
 }
+
+TEST(OccupancyGrid, CropKeepsWorldCoordinates)
+{
+    OccupancyGrid g(20, 10, 0.5);
+    g.setOrigin(-3.0, 2.0);
+    g.set(7, 4, CellState::Occupied);
+    const OccupancyGrid c = g.cropped(5, 3, 6, 4);
+    EXPECT_EQ(c.width(), 6);
+    EXPECT_EQ(c.height(), 4);
+    // the same world point is the occupied cell in both
+    const double x = g.cellCenterX(7), y = g.cellCenterY(4);
+    const Cell in = c.worldToCell(x, y);
+    EXPECT_EQ(in.col, 2);
+    EXPECT_EQ(in.row, 1);
+    EXPECT_TRUE(c.isBlocked(in.col, in.row));
+    EXPECT_NEAR(c.cellCenterX(0), g.cellCenterX(5), 1e-12);
+    EXPECT_NEAR(c.cellCenterY(0), g.cellCenterY(3), 1e-12);
+    EXPECT_EQ(g.cropped(18, 8, 10, 10).width(), 2);  // clipped
+    EXPECT_THROW(g.cropped(30, 0, 5, 5), std::invalid_argument);
+}

@@ -1,6 +1,8 @@
 // gridcar: command-line front end. Exit status: 0 ok, 2 bad input, 1 internal error.
 #include "Commands.h"
 
+#include "gridcar/planners/PlannerFactory.h"
+
 #include "gridcar/io/Image.h"
 
 #include <cstdio>
@@ -47,10 +49,9 @@ int main(int argc, char **argv)
     PlanOptions plan;
     auto *cPlan = app.add_subcommand("plan", "Plan one path on a map with a grid planner or an OMPL planner");
     cPlan->add_option("--map", plan.map, "Map file")->required();
-    cPlan->add_option("--planner", plan.planner,
-                      "dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar, rrt, rrtconnect, "
-                      "rrtstar, prm, prmstar, lazyprmstar, bitstar, informedrrtstar")
-        ->required();
+    std::string plannerList;
+    for (const auto &n : gridcar::plannerNames()) plannerList += (plannerList.empty() ? "" : ", ") + n;
+    cPlan->add_option("--planner", plan.planner, plannerList)->required();
     cPlan->add_option("--start", plan.start, "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: free start heading for the grid "
                                              "planners (OMPL planners start at yaw 0)");
     cPlan->add_option("--start-cell", plan.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row)");

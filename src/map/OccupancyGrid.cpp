@@ -65,6 +65,20 @@ OccupancyGrid::Counts OccupancyGrid::counts() const
     return c;
 }
 
+OccupancyGrid OccupancyGrid::cropped(int col0, int row0, int w, int h) const
+{
+    const int c0 = std::max(0, col0), r0 = std::max(0, row0);
+    const int c1 = std::min(width_, col0 + std::max(0, w)), r1 = std::min(height_, row0 + std::max(0, h));
+    if (c1 <= c0 || r1 <= r0) throw std::invalid_argument("crop window misses the map");
+    OccupancyGrid out(c1 - c0, r1 - r0, resolution_, CellState::Free);
+    // lower-left corner of the window: column c0, the bottom row r1 - 1
+    out.setOrigin(originX_ + c0 * resolution_, originY_ + (height_ - r1) * resolution_, originYaw_);
+    out.setUnknownIsFree(unknownIsFree_);
+    for (int r = r0; r < r1; ++r)
+        for (int c = c0; c < c1; ++c) out.set(c - c0, r - r0, at(c, r));
+    return out;
+}
+
 OccupancyGrid OccupancyGrid::resampled(double newResolution) const
 {
     if (!std::isfinite(newResolution) || newResolution <= 0.0)

@@ -1,5 +1,7 @@
 #include "gridcar/path/PathMetrics.h"
 
+#include "gridcar/path/PostProcess.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,6 +23,7 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
     for (const Pose2 &p : path)
         if (pts.empty() || dist(p, pts.back()) > 1e-9) pts.push_back(p);
     for (std::size_t i = 1; i < pts.size(); ++i) m.length += dist(pts[i - 1], pts[i]);
+    m.maxCurvature = maxMengerCurvature(pts);
 
     // turning points and the largest heading change at one of them
     for (std::size_t i = 1; i + 1 < pts.size(); ++i)
@@ -73,10 +76,13 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
     if (checker)
     {
         double best = std::numeric_limits<double>::infinity();
+        double bestLine = best;
+        const DistanceField &field = checker->field();
         const double step = checker->grid().resolution() / 2;
         for (std::size_t i = 0; i < pts.size(); ++i)
         {
             best = std::min(best, checker->clearance(pts[i].x, pts[i].y, pts[i].yaw));
+            bestLine = std::min(bestLine, field.distance(pts[i].x, pts[i].y));
             if (i + 1 == pts.size()) break;
             const double len = dist(pts[i], pts[i + 1]);
             const double yaw = std::atan2(pts[i + 1].y - pts[i].y, pts[i + 1].x - pts[i].x);
@@ -84,11 +90,13 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
             for (int j = 1; j < k; ++j)
             {
                 const double t = double(j) / k;
-                best = std::min(best, checker->clearance(pts[i].x + t * (pts[i + 1].x - pts[i].x),
-                                                         pts[i].y + t * (pts[i + 1].y - pts[i].y), yaw));
+                const double x = pts[i].x + t * (pts[i + 1].x - pts[i].x), y = pts[i].y + t * (pts[i + 1].y - pts[i].y);
+                best = std::min(best, checker->clearance(x, y, yaw));
+                bestLine = std::min(bestLine, field.distance(x, y));
             }
         }
         m.minClearance = std::isfinite(best) ? best : 0.0;
+        m.minPathDistance = std::isfinite(bestLine) ? bestLine : 0.0;
     }
     return m;
 }

@@ -72,7 +72,8 @@ void GridPlanner::setup()
     if (!scratchB_) scratchB_ = si_->allocState();
     const std::size_t cells = std::size_t(width_) * height_;
     if (moveCache_.size() != cells * 8) moveCache_.assign(cells * 8, 0);
-    if (!search_ || search_->size() != stateCount()) search_ = std::make_unique<SearchSpace>(stateCount());
+    if (usesDenseSearch() && (!search_ || search_->size() != stateCount()))
+        search_ = std::make_unique<SearchSpace>(stateCount());
 }
 
 void GridPlanner::clear()
@@ -207,9 +208,9 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
         return PlannerStatus::TIMEOUT;
     const std::uint32_t end = res.outcome == SearchOutcome::Found ? res.goal : res.closest;
     if (end == SearchSpace::kNoParent) return PlannerStatus::TIMEOUT;
-    for (std::uint32_t s = end; s != SearchSpace::kNoParent; s = search_->parent(s)) lastPath_.push_back(s);
+    for (std::uint32_t s = end; s != SearchSpace::kNoParent; s = parentOf(s)) lastPath_.push_back(s);
     std::reverse(lastPath_.begin(), lastPath_.end());
-    lastCost_ = search_->g(end);
+    lastCost_ = gOf(end);
 
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
     path->append(start);
@@ -230,6 +231,7 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     if (exact)
         if (auto *gs = dynamic_cast<const ompl::base::GoalState *>(goal))
             if (lastPath_.size() > 1 || !si_->equalStates(start, gs->getState())) path->append(gs->getState());
+    postProcess(*path);
     double dist = 0.0;
     goalRegion_->isSatisfied(path->getState(path->getStateCount() - 1), &dist);
     pdef_->addSolutionPath(path, !exact, exact ? 0.0 : dist, getName());
@@ -238,25 +240,29 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     return PlannerStatus::APPROXIMATE_SOLUTION;
 }
 
+void GridPlanner::forEachClosed(const std::function<void(std::uint32_t)> &fn) const
+{
+    if (!search_) return;
+    const std::size_t n = stateCount();
+    for (std::size_t s = 0; s < n; ++s)
+        if (search_->closed(std::uint32_t(s))) fn(std::uint32_t(s));
+}
+
 std::vector<Cell> GridPlanner::expandedCells() const
 {
     std::vector<Cell> out;
-    if (!search_) return out;
-    const std::size_t n = stateCount();
-    for (std::size_t s = 0; s < n; ++s)
-        if (search_->closed(std::uint32_t(s)))
-        {
-            int c, r, d;
-            decode(std::uint32_t(s), c, r, d);
-            out.push_back({c, r});
-        }
+    forEachClosed([&](std::uint32_t s) {
+        int c, r, d;
+        decode(s, c, r, d);
+        out.push_back({c, r});
+    });
     return out;
 }
 
 void GridPlanner::getPlannerData(ompl::base::PlannerData &data) const
 {
     ompl::base::Planner::getPlannerData(data);
-    if (!search_ || !space_) return;
+    if (!space_) return;
     // PlannerData identifies vertices by state pointer: one state per expanded search state,
     // owned here until clear() (decoupleFromPlanner() copies them)
     auto stateOf = [&](std::uint32_t s) {
@@ -271,16 +277,13 @@ void GridPlanner::getPlannerData(ompl::base::PlannerData &data) const
         dataStates_.emplace(s, st);
         return st;
     };
-    const std::size_t n = stateCount();
-    for (std::size_t s = 0; s < n; ++s)
-    {
-        if (!search_->closed(std::uint32_t(s))) continue;
-        const std::uint32_t p = search_->parent(std::uint32_t(s));
+    forEachClosed([&](std::uint32_t s) {
+        const std::uint32_t p = parentOf(s);
         if (p == SearchSpace::kNoParent)
-            data.addStartVertex(ompl::base::PlannerDataVertex(stateOf(std::uint32_t(s))));
+            data.addStartVertex(ompl::base::PlannerDataVertex(stateOf(s)));
         else
-            data.addEdge(ompl::base::PlannerDataVertex(stateOf(p)), ompl::base::PlannerDataVertex(stateOf(std::uint32_t(s))));
-    }
+            data.addEdge(ompl::base::PlannerDataVertex(stateOf(p)), ompl::base::PlannerDataVertex(stateOf(s)));
+    });
 }
 
 void GridPlanner::freeDataStates()

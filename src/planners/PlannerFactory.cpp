@@ -1,6 +1,7 @@
 #include "gridcar/planners/PlannerFactory.h"
 
 #include "gridcar/planners/GridPlanner.h"
+#include "gridcar/planners/ImprovedAStar.h"
 
 #include <ompl/geometric/planners/informedtrees/BITstar.h>
 #include <ompl/geometric/planners/prm/LazyPRMstar.h>
@@ -17,7 +18,7 @@ namespace gridcar
 {
 std::vector<std::string> gridPlannerNames()
 {
-    return {"dijkstra", "astar-manhattan", "astar-euclidean", "astar-octile", "corner-astar"};
+    return {"dijkstra", "astar-manhattan", "astar-euclidean", "astar-octile", "corner-astar", "improved-astar"};
 }
 
 std::vector<std::string> omplPlannerNames()
@@ -40,6 +41,7 @@ ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, co
     if (name == "astar-euclidean") return std::make_shared<GridAStar>(si, GridHeuristic::Euclidean, name);
     if (name == "astar-octile") return std::make_shared<GridAStar>(si, GridHeuristic::Octile, name);
     if (name == "corner-astar") return std::make_shared<CornerAStar>(si);
+    if (name == "improved-astar") return std::make_shared<ImprovedAStar>(si);
     if (name == "rrt") return std::make_shared<og::RRT>(si);
     if (name == "rrtconnect") return std::make_shared<og::RRTConnect>(si);
     if (name == "rrtstar") return std::make_shared<og::RRTstar>(si);

@@ -103,6 +103,10 @@ public:
     /// cell it overlaps is occupied, unknown if any is unknown and none occupied, else free
     /// (conservative for planning).
     OccupancyGrid resampled(double newResolution) const;
+    /// The cells [col0, col0 + w) x [row0, row0 + h) (clipped to the map) as a new grid with the
+    /// same world coordinates (origin moved), e.g. to draw a detail. Throws std::invalid_argument
+    /// if the window misses the map.
+    OccupancyGrid cropped(int col0, int row0, int w, int h) const;
 
 private:
     int width_{0};

@@ -24,6 +24,8 @@ struct PathMetrics
     double maxTurnDeg{0.0};     ///< largest heading change at one turning point, degrees
     int turningPoints{0};       ///< vertices where the heading changes (collinear ones removed)
     double minClearance{0.0};   ///< m, FootprintChecker::clearance minimum along the path
+    double minPathDistance{0.0}; ///< m, smallest obstacle distance d_O of the path line itself (paper I's "nearest distance to the curb")
+    double maxCurvature{0.0};   ///< 1/m, largest Menger curvature of consecutive vertices (maxMengerCurvature())
 };
 
 /**
@@ -39,6 +41,12 @@ struct PathMetrics
  *   sharp grid corner or a smooth arc, while a grid staircase (E, NE, E, NE, ...) or a zigzag
  *   around a straight line is no turn. Corners closer than one window to either end of the
  *   path are not counted.
+ * - Max curvature: maxMengerCurvature() (PostProcess.h) of the vertices: for a smooth, densely
+ *   sampled path the curvature the vehicle must drive; for a grid path it scores the sharpest
+ *   corner (2 sin(theta) / chord).
+ * - Path distance: DistanceField::distance (bilinear d_O) at the same points as clearance: how
+ *   far the path line stays from obstacle cell centres (paper I's metric; > D/2 keeps a
+ *   vehicle centred on the line off the curb sideways).
  * - Clearance: FootprintChecker::clearance at the path's poses and at points every half cell
  *   along each segment (yaw of the segment); 0 if any of them collides.
  */

@@ -9,7 +9,10 @@
 #include <ompl/base/Planner.h>
 #include <ompl/base/goals/GoalRegion.h>
 
+#include <ompl/geometric/PathGeometric.h>
+
 #include <array>
+#include <functional>
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
@@ -117,6 +120,17 @@ protected:
                                    const ompl::base::PlannerTerminationCondition &ptc) = 0;
     /// Cell (and arrival direction, -1 if the state has none) of a search state.
     virtual void decode(std::uint32_t s, int &col, int &row, int &dir) const = 0;
+    /// True if the planner searches the dense SearchSpace `search_` (allocated by setup());
+    /// a planner with its own search space returns false and overrides the three below.
+    virtual bool usesDenseSearch() const { return true; }
+    /// Parent and g of a state of the last search.
+    virtual std::uint32_t parentOf(std::uint32_t s) const { return search_->parent(s); }
+    virtual double gOf(std::uint32_t s) const { return search_->g(s); }
+    /// Calls fn(s) for every state the last search expanded.
+    virtual void forEachClosed(const std::function<void(std::uint32_t)> &fn) const;
+    /// Hook for a planner that post-processes its lattice path (default: none). Returns true
+    /// when it replaced @p path.
+    virtual bool postProcess(ompl::geometric::PathGeometric &path) { (void)path; return false; }
 
 
     std::shared_ptr<GridSE2StateSpace> space_;

@@ -9,7 +9,7 @@
 
 namespace gridcar
 {
-/// dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar.
+/// dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar, improved-astar.
 std::vector<std::string> gridPlannerNames();
 /// rrt, rrtconnect, rrtstar, prm, prmstar, lazyprmstar, bitstar, informedrrtstar.
 std::vector<std::string> omplPlannerNames();

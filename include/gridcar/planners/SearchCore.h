@@ -10,6 +10,8 @@
 #include <memory>
 #include <new>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace gridcar
@@ -50,6 +52,123 @@ private:
     std::uint32_t *stamp_{nullptr};
     double *g_{nullptr};
     std::uint32_t *parent_{nullptr};
+};
+
+/**
+ * @brief The same interface as SearchSpace over a hash table (open addressing, linear probing),
+ * for lattices too large for dense arrays (e.g. improved A*'s cell x heading x straight-run
+ * states): memory grows with the states a search touches, not with the lattice.
+ */
+class HashSearchSpace
+{
+public:
+    HashSearchSpace() { rehash(1u << 12); }
+    /// Starts a new search (O(table size)).
+    void reset()
+    {
+        if (used_ == 0) return;
+        for (Slot &sl : slots_) sl.key = kEmpty;
+        used_ = 0;
+    }
+    bool seen(std::uint32_t s) const { return find(s) != nullptr; }
+    bool closed(std::uint32_t s) const
+    {
+        const Slot *sl = find(s);
+        return sl && sl->closed;
+    }
+    double g(std::uint32_t s) const
+    {
+        const Slot *sl = find(s);
+        return sl ? sl->g : std::numeric_limits<double>::infinity();
+    }
+    std::uint32_t parent(std::uint32_t s) const
+    {
+        const Slot *sl = find(s);
+        return sl ? sl->parent : SearchSpace::kNoParent;
+    }
+    void open(std::uint32_t s, double g, std::uint32_t parent)
+    {
+        Slot &sl = insert(s);
+        sl.g = g;
+        sl.parent = parent;
+        sl.closed = 0;
+    }
+    void close(std::uint32_t s) { insert(s).closed = 1; }
+    /// Number of states the current search has touched.
+    std::size_t touched() const { return used_; }
+    /// Calls fn(state, closed) for every touched state (in table order).
+    template <class Fn>
+    void forEach(Fn &&fn) const
+    {
+        for (const Slot &sl : slots_)
+            if (sl.key != kEmpty) fn(sl.key, sl.closed != 0);
+    }
+
+private:
+    static constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+    struct Slot
+    {
+        std::uint32_t key{kEmpty};
+        std::uint32_t parent{0};
+        double g{0.0};
+        std::uint8_t closed{0};
+    };
+    std::size_t home(std::uint32_t s) const { return (std::uint64_t(s) * 0x9E3779B97F4A7C15ull) >> shift_; }
+    const Slot *find(std::uint32_t s) const
+    {
+        for (std::size_t i = home(s);; i = (i + 1) & mask_)
+        {
+            const Slot &sl = slots_[i];
+            if (sl.key == s) return &sl;
+            if (sl.key == kEmpty) return nullptr;
+        }
+    }
+    Slot &insert(std::uint32_t s)
+    {
+        if (2 * (used_ + 1) > slots_.size()) rehash(slots_.size() * 2);
+        for (std::size_t i = home(s);; i = (i + 1) & mask_)
+        {
+            Slot &sl = slots_[i];
+            if (sl.key == s) return sl;
+            if (sl.key == kEmpty)
+            {
+                sl.key = s;
+                ++used_;
+                return sl;
+            }
+        }
+    }
+    void rehash(std::size_t n)
+    {
+        std::vector<Slot> old;
+        old.swap(slots_);
+        slots_.assign(n, Slot());
+        mask_ = n - 1;
+        shift_ = 64;
+        for (std::size_t k = n; k > 1; k >>= 1) --shift_;
+        used_ = 0;
+        for (const Slot &sl : old)
+            if (sl.key != kEmpty)
+            {
+                Slot &d = insert(sl.key);
+                d = sl;
+            }
+    }
+    std::vector<Slot> slots_;
+    std::size_t mask_{0};
+    int shift_{64};
+    std::size_t used_{0};
+};
+
+/// True if the expander defines `double priority(double g, double h, std::uint32_t s) const`.
+template <class E, class = void>
+struct HasPriority : std::false_type
+{
+};
+template <class E>
+struct HasPriority<E, std::void_t<decltype(std::declval<const E &>().priority(0.0, 0.0, std::uint32_t(0)))>>
+  : std::true_type
+{
 };
 
 /// How a search ended.
@@ -122,16 +241,35 @@ private:
  *   hNext = heuristic(next) (the expander knows the successor's coordinates, so it computes h
  *   without decoding the state index again).
  *
+ * An expander may also define `double priority(double g, double h, uint32_t s) const`: the
+ * open list is then ordered by it instead of f = g + h (paper I's f = g' + h (1 + o) + s); the
+ * closest state for an approximate solution is still the one of least heuristic().
+ * @p reopen: with an inconsistent heuristic or priority, a closed state reached again with a
+ * cheaper g is reopened (default) or left closed (a best-first search that keeps its first
+ * parent).
+ *
+ * Works on a SearchSpace (dense arrays) or a HashSearchSpace.
+ *
  * Open list: a binary heap (OpenList) with lazy deletion (stale entries are skipped when popped).
  * Tie-breaking is deterministic: lower f first, then higher g (deeper states, fewer
  * re-expansions on plateaus), then lower state index. @p cancelled is polled every 256
  * expansions. With a consistent heuristic each state is expanded at most once; with an
  * inconsistent one (paper I's mode) a closed state is reopened when a cheaper g reaches it.
  */
-template <class Expander, class Cancelled>
-SearchResult astar(SearchSpace &space, const std::vector<std::uint32_t> &starts, Expander &ex, Cancelled &&cancelled,
-                   std::uint64_t *progress = nullptr)
+template <class Space, class Expander, class Cancelled>
+SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expander &ex, Cancelled &&cancelled,
+                   std::uint64_t *progress = nullptr, bool reopen = true)
 {
+    constexpr bool custom = HasPriority<Expander>::value;
+    auto priorityOf = [&](double g, double h, std::uint32_t s) {
+        if constexpr (custom)
+            return ex.priority(g, h, s);
+        else
+        {
+            (void)s;
+            return g + h;
+        }
+    };
     SearchResult res;
     space.reset();
     OpenList heap;
@@ -139,7 +277,7 @@ SearchResult astar(SearchSpace &space, const std::vector<std::uint32_t> &starts,
     {
         if (space.seen(s)) continue;
         space.open(s, 0.0, SearchSpace::kNoParent);
-        heap.push({ex.heuristic(s), 0.0f, s});
+        heap.push({priorityOf(0.0, ex.heuristic(s), s), 0.0f, s});
     }
     double bestH = std::numeric_limits<double>::infinity();
     while (!heap.empty())
@@ -153,7 +291,11 @@ SearchResult astar(SearchSpace &space, const std::vector<std::uint32_t> &starts,
         space.close(e.s);
         ++res.expanded;
         if (progress) *progress = res.expanded;
-        const double h = e.f - g;
+        double h;
+        if constexpr (custom)
+            h = ex.heuristic(e.s);
+        else
+            h = e.f - g;
         if (h < bestH)
         {
             bestH = h;
@@ -172,10 +314,10 @@ SearchResult astar(SearchSpace &space, const std::vector<std::uint32_t> &starts,
         }
         ex.successors(e.s, [&](std::uint32_t n, double cost, double hn) {
             const double ng = g + cost;
-            if (ng < space.g(n))
+            if (ng < space.g(n) && (reopen || !space.closed(n)))
             {
                 space.open(n, ng, e.s);
-                heap.push({ng + hn, float(ng), n});
+                heap.push({priorityOf(ng, hn, n), float(ng), n});
                 ++res.generated;
             }
         });
