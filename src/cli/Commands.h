@@ -58,6 +58,7 @@ struct PlanOptions
     bool unknownFree{false};
     std::string outCsv;
     std::string png;
+    bool smooth{false};
 };
 /// Exit status: 0 exact solution, 3 planned without an exact solution (timeout / approximate).
 int runPlan(const PlanOptions &o);
@@ -70,6 +71,17 @@ struct ScenOptions
     std::size_t limit{0};  ///< 0: all
     bool json{false};
 };
+struct PaperIOptions
+{
+    std::string outDir{"paper-i-out"};
+    std::string sharedDir{"../shared"};
+    double timeLimit{60.0};
+    bool skipNative{false};
+    std::vector<std::string> maps;  ///< empty: all
+};
+/// Paper I's tables on the embedded campus and the Tsudanuma map (when found under sharedDir).
+int runPaperI(const PaperIOptions &o);
+
 /// Exit status: 0 every path matched the published optimal length, 3 otherwise.
 int runScen(const ScenOptions &o);
 }  // namespace gridcar::cli

@@ -1,5 +1,6 @@
 // gridcar plan / gridcar scen.
 #include "Commands.h"
+#include "Query.h"
 
 #include "gridcar/io/Render.h"
 #include "gridcar/map/MapIO.h"
@@ -179,25 +180,27 @@ int runPlan(const PlanOptions &o)
     };
     if (!setup.checker->isValid(start)) fail("Invalid start", "start " + describe(start) + " is " + whyInvalid(start));
     if (!setup.checker->isValid(goal)) fail("Invalid goal", "goal " + describe(goal) + " is " + whyInvalid(goal));
-    setup.setStartAndGoal(start, goal);
-    setup.ss->setPlanner(planner);
-    const auto t0 = Clock::now();
-    const ompl::base::PlannerStatus status = setup.ss->solve(o.timeLimit);
-    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-
-    std::vector<Pose2> path;
-    if (setup.ss->haveSolutionPath())
-        for (const auto *s : setup.ss->getSolutionPath().getStates()) path.push_back(toPose(s));
-    const PathMetrics m = computePathMetrics(path, setup.checker.get());
+    const QueryResult q = runQuery(setup, planner, start, goal, o.timeLimit, o.smooth);
+    const PathMetrics &m = q.metrics;
+    const std::vector<Pose2> &path = q.path;
     auto *gp = dynamic_cast<GridPlanner *>(planner.get());
-    j["status"] = status.asString();
-    j["cost"] = gp ? gp->lastCost() : m.length;
+    j["status"] = q.status.asString();
+    j["cost"] = q.cost;
     j["length"] = m.length;
-    j["expanded"] = gp ? gp->expandedNodes() : 0;
+    j["expanded"] = q.expanded;
     j["turns"] = m.turns;
-    j["max_turn_deg"] = m.maxTurnDeg;
+    j["max_turn_deg"] = q.maxTurnDeg;
     j["min_clearance"] = m.minClearance;
-    j["time"] = seconds;
+    j["min_path_distance"] = m.minPathDistance;
+    j["max_curvature"] = m.maxCurvature;
+    j["time"] = q.seconds;
+    j["smoothing_time"] = q.smoothingSeconds;
+    j["smoothed"] = q.smoothed;
+    if (q.smoothed)
+    {
+        j["adjust_failures"] = q.adjustFailures;
+        j["bezier_fallbacks"] = q.bezierFallbacks;
+    }
     j["vehicle"] = vehicle.name;
     nlohmann::json jp = nlohmann::json::array();
     for (const Pose2 &p : path) jp.push_back({p.x, p.y, p.yaw});
@@ -206,10 +209,16 @@ int runPlan(const PlanOptions &o)
         std::cout << j.dump() << "\n";
     else
     {
-        std::printf("%s: %s in %.3f s\n", o.planner.c_str(), status.asString().c_str(), seconds);
-        std::printf("  length %.2f m, cost %.2f, %d poses, %d turns, max turn %.1f deg, min clearance %.2f m",
-                    m.length, double(j["cost"]), int(path.size()), m.turns, m.maxTurnDeg, m.minClearance);
-        if (gp) std::printf(", %llu nodes expanded", (unsigned long long)gp->expandedNodes());
+        std::printf("%s: %s in %.3f s", o.planner.c_str(), q.status.asString().c_str(), q.seconds);
+        if (q.smoothed) std::printf(" (smoothing %.4f s)", q.smoothingSeconds);
+        std::printf("\n  length %.2f m, cost %.2f, %d poses, %d turns, max turn %.1f deg, max curvature %.3f 1/m, "
+                    "min clearance %.2f m (path line %.2f m from obstacles)",
+                    m.length, q.cost, int(path.size()), m.turns, q.maxTurnDeg, m.maxCurvature, m.minClearance,
+                    m.minPathDistance);
+        if (gp) std::printf(", %llu nodes expanded", (unsigned long long)q.expanded);
+        if (q.smoothed && q.adjustFailures + q.bezierFallbacks > 0)
+            std::printf("\n  smoothing: %d corner(s) still above K_max, %d Bezier piece(s) collided and were kept sharp",
+                        q.adjustFailures, q.bezierFallbacks);
         std::printf("\n");
     }
     if (!o.outCsv.empty())
@@ -224,6 +233,12 @@ int runPlan(const PlanOptions &o)
     {
         MapCanvas canvas(*grid);
         if (gp) canvas.tintCells(gp->expandedCells(), {170, 200, 255});
+        if (q.smoothed)
+        {
+            std::vector<std::pair<double, double>> raw;
+            for (const Pose2 &p : q.rawPath) raw.push_back({p.x, p.y});
+            canvas.polyline(raw, {250, 170, 60}, 1);
+        }
         std::vector<std::pair<double, double>> pts;
         for (const Pose2 &p : path) pts.push_back({p.x, p.y});
         canvas.polyline(pts, {220, 30, 30}, 2);
@@ -231,7 +246,7 @@ int runPlan(const PlanOptions &o)
         canvas.disc(goal.x, goal.y, 4, {0, 0, 200});
         canvas.save(o.png);
     }
-    return status == ompl::base::PlannerStatus::EXACT_SOLUTION ? 0 : 3;
+    return q.status == ompl::base::PlannerStatus::EXACT_SOLUTION ? 0 : 3;
 }
 
 int runScen(const ScenOptions &o)

@@ -63,15 +63,32 @@ int main(int argc, char **argv)
     cPlan->add_option("--param", plan.params, "NAME=VALUE: set a declared planner parameter (repeatable)");
     cPlan->add_option("--time-limit", plan.timeLimit, "Seconds")->capture_default_str();
     cPlan->add_flag("--json", plan.json,
-                    "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, "
+                    "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, "
+                    "min_path_distance, smoothing_time, "
                     "min_clearance, time, path [[x, y, yaw_rad], ...]");
     cPlan->add_flag("--unknown-free", plan.unknownFree, "Treat unknown cells as free");
     cPlan->add_option("--out", plan.outCsv, "Write the path as CSV (x,y,yaw)");
-    cPlan->add_option("--png", plan.png, "Write a picture of the map, the path and the expanded cells");
+    cPlan->add_option("--png", plan.png, "Write a picture of the map, the path (before smoothing in orange) and the "
+                                         "expanded cells");
+    cPlan->add_flag("--smooth", plan.smooth,
+                    "Post-process any planner's path as paper I does (line of sight, turning-point adjustment under "
+                    "K_max, Bezier); improved-astar does this itself unless --param smooth=0");
     cPlan->footer("Exit status: 0 exact solution, 3 no exact solution (timeout / approximate), 2 bad input "
                   "(including a start or goal off the map or in collision), 1 internal error.");
 
     ScenOptions scen;
+    PaperIOptions paper;
+    auto *cPaper = app.add_subcommand(
+        "paper-i", "Reproduce paper I's tables: Dijkstra, A* Manhattan / Euclidean, improved A* (paper and integral "
+                   "modes) and corner A* in three areas of the embedded campus and of the Tsudanuma map (native and "
+                   "resampled to 0.298 m/cell); writes paper_i_tables.md, paper_i.json and one picture per area");
+    cPaper->add_option("--out", paper.outDir, "Output folder")->capture_default_str();
+    cPaper->add_option("--shared", paper.sharedDir, "Folder holding maps/ros/tsudanuma_campus (skipped if absent)")
+        ->capture_default_str();
+    cPaper->add_option("--time-limit", paper.timeLimit, "Seconds per query")->capture_default_str();
+    cPaper->add_option("--maps", paper.maps, "Only these of campus, tsudanuma-0.298, tsudanuma (default: all found)");
+    cPaper->add_flag("--skip-native", paper.skipNative, "Do not run the native 0.05 m/cell Tsudanuma map (the slow part)");
+
     auto *cScen = app.add_subcommand("scen", "Run a Moving AI scenario file and compare with the published optimal lengths");
     cScen->add_option("--map", scen.map, "Moving AI .map file")->required();
     cScen->add_option("--scen", scen.scen, "Moving AI .scen file")->required();
@@ -107,6 +124,7 @@ int main(int argc, char **argv)
         if (*cDemo) return runDemo(demo);
         if (*cPlan) return runPlan(plan);
         if (*cScen) return runScen(scen);
+        if (*cPaper) return runPaperI(paper);
     }
     catch (const gridcar::MapLoadError &e)
     {

@@ -158,6 +158,7 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
 {
     using ompl::base::PlannerStatus;
     checkValidity();
+    freeDataStates();  // PlannerData states are cached by search state, which a new search renumbers
     lastPath_.clear();
     lastExpanded_ = 0;
     progressExpanded_ = 0;

@@ -64,11 +64,6 @@ void ImprovedAStar::setup()
     need_[0] = int(std::ceil(lturn / straightStep_ - 1e-9));
     need_[1] = int(std::ceil(lturn / diagStep_ - 1e-9));
     runStates_ = std::max(need_[0], need_[1]) + 1;
-    const double states = double(width_) * height_ * 8.0 * runStates_;
-    if (states >= double(std::numeric_limits<std::uint32_t>::max()))
-        throw ompl::Exception(getName(), "lattice of " + std::to_string(width_) + " x " + std::to_string(height_) +
-                                             " cells x 8 headings x " + std::to_string(runStates_) +
-                                             " run states exceeds 2^32 states; use a coarser map");
     const double phi = v.maxSteerDeg * M_PI / 180.0;
     arcFactor_ = phi > 1e-9 ? phi / std::sin(phi) : 1.0;
     const std::string h = heuristic_ == "auto" ? (paperMode_ ? "arc" : "octile") : heuristic_;
@@ -79,19 +74,33 @@ void ImprovedAStar::clear()
 {
     GridPlanner::clear();
     hash_.reset();
+    ids_.clear();
+    keys_.clear();
     lastSmoothing_ = SmoothingResult();
     latticePath_.clear();
 }
 
-std::size_t ImprovedAStar::stateCount() const { return std::size_t(width_) * height_ * 8 * std::size_t(runStates_); }
+std::size_t ImprovedAStar::stateCount() const { return keys_.size(); }
+
+std::uint32_t ImprovedAStar::intern(std::uint64_t key) const
+{
+    auto it = ids_.find(key);
+    if (it != ids_.end()) return it->second;
+    if (keys_.size() >= std::size_t(SearchSpace::kNoParent) - 1)
+        throw ompl::Exception("improved-astar", "more than 2^32 - 2 search states");
+    const auto id = std::uint32_t(keys_.size());
+    ids_.emplace(key, id);
+    keys_.push_back(key);
+    return id;
+}
 
 void ImprovedAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
 {
-    const std::uint32_t cd = s / std::uint32_t(runStates_);
+    const std::uint64_t cd = keyOf(s) / std::uint64_t(runStates_);
     dir = int(cd % 8);
-    const std::uint32_t cell = cd / 8;
-    col = int(cell % std::uint32_t(width_));
-    row = int(cell / std::uint32_t(width_));
+    const std::uint64_t cell = cd / 8;
+    col = int(cell % std::uint64_t(width_));
+    row = int(cell / std::uint64_t(width_));
 }
 
 double ImprovedAStar::obstacleCostAt(int col, int row) const
@@ -115,11 +124,13 @@ double ImprovedAStar::heuristicAt(int col, int row, int goalCol, int goalRow) co
 
 std::vector<std::uint32_t> ImprovedAStar::startStates(const Query &q) const
 {
-    const std::uint32_t cell = std::uint32_t(q.startRow * width_ + q.startCol);
+    ids_.clear();
+    keys_.clear();
+    const std::uint64_t cell = std::uint64_t(q.startRow) * std::uint64_t(width_) + std::uint64_t(q.startCol);
     std::vector<std::uint32_t> out;
     for (int d = 0; d < 8; ++d)
         if (q.startDir < 0 || d == q.startDir)
-            out.push_back((cell * 8 + std::uint32_t(d)) * std::uint32_t(runStates_) + std::uint32_t(need_[d & 1] / 2));
+            out.push_back(intern((cell * 8 + std::uint64_t(d)) * std::uint64_t(runStates_) + std::uint64_t(need_[d & 1] / 2)));
     return out;
 }
 
@@ -138,11 +149,12 @@ struct ImprovedExpander
     int W, K;
     void split(std::uint32_t s, int &c, int &r, int &dir, int &k) const
     {
-        k = int(s % std::uint32_t(K));
-        const std::uint32_t cd = s / std::uint32_t(K);
+        const std::uint64_t key = self->keyOf(s);
+        k = int(key % std::uint64_t(K));
+        const std::uint64_t cd = key / std::uint64_t(K);
         dir = int(cd % 8);
-        c = int((cd / 8) % std::uint32_t(W));
-        r = int((cd / 8) / std::uint32_t(W));
+        c = int((cd / 8) % std::uint64_t(W));
+        r = int((cd / 8) / std::uint64_t(W));
     }
     double hAt(int c, int r) const { return q.goalIsState ? self->heuristicAt(c, r, q.goalCol, q.goalRow) : 0.0; }
     double heuristic(std::uint32_t s) const
@@ -181,7 +193,8 @@ struct ImprovedExpander
             if (!moveOk(c, r, d)) continue;
             const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
             const int nk = std::min(dd == 0 ? k + 1 : 1, K - 1);
-            const std::uint32_t next = (std::uint32_t(nr * W + nc) * 8 + std::uint32_t(d)) * std::uint32_t(K) + std::uint32_t(nk);
+            const std::uint64_t cell = std::uint64_t(nr) * std::uint64_t(W) + std::uint64_t(nc);
+            const std::uint32_t next = self->intern((cell * 8 + std::uint64_t(d)) * std::uint64_t(K) + std::uint64_t(nk));
             double cost = self->stepLength(d);
             if (!self->paperMode_) cost *= 1.0 + 0.5 * (oHere + self->obstacleCostAt(nc, nr));
             emit(next, cost, hAt(nc, nr));

@@ -6,6 +6,7 @@
 #include "gridcar/planners/GridPlanner.h"
 
 #include <string>
+#include <unordered_map>
 
 namespace gridcar
 {
@@ -21,7 +22,8 @@ namespace gridcar
  * (= 0.897 R_min) with K_max = tan(phi_max) / wheelbase (eq. 2). That is exactly the leg length
  * for which the symmetric quadratic Bezier round a 45-degree vertex (bezierCorner(), end points
  * at half the leg) has curvature <= K_max, so the searched path is drivable after smoothing, not
- * only the smoothed one. The first leg from the start and the last leg into the goal need half
+ * only the smoothed one (states are interned on discovery, so the lattice size is not bounded
+ * by 32-bit indices). The first leg from the start and the last leg into the goal need half
  * of that (the start state counts floor(need / 2) steps already run; a goal is accepted with
  * k >= ceil(need / 2)). A point vehicle (K_max = inf) has need = 0.
  *
@@ -116,6 +118,12 @@ private:
     int runStates_{1};      ///< K: values of the straight-run counter (0 .. K-1)
     double arcFactor_{1.0}; ///< phi_max / sin(phi_max)
     int hKind_{0};          ///< 0 arc, 1 euclidean, 2 octile (resolved from heuristic_ and mode)
+    /// Lattice key ((cell * 8 + heading) * K + run) of a state; search states are compact ids
+    /// handed out in order of discovery (the lattice of a 0.05 m map exceeds 2^32 keys).
+    std::uint32_t intern(std::uint64_t key) const;
+    std::uint64_t keyOf(std::uint32_t id) const { return keys_[id]; }
+    mutable std::unordered_map<std::uint64_t, std::uint32_t> ids_;
+    mutable std::vector<std::uint64_t> keys_;
     HashSearchSpace hash_;
     SmoothingResult lastSmoothing_;
     std::vector<Pose2> latticePath_;

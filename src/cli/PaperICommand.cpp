@@ -1,0 +1,212 @@
+// gridcar paper-i: paper I's section 4 (three query areas, the baselines and improved A*) on the
+// embedded campus and on the real Tsudanuma campus map (native and at paper I's 0.298 m/cell).
+#include "Commands.h"
+#include "Query.h"
+
+#include "gridcar/io/Render.h"
+#include "gridcar/map/CampusGenerator.h"
+#include "gridcar/map/MapIO.h"
+#include "gridcar/planners/PlannerFactory.h"
+
+#include <ompl/util/Console.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace gridcar::cli
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+struct Area
+{
+    std::string name;
+    double sx, sy, gx, gy;  ///< world coordinates before snapping to a free cell
+};
+
+struct MapCase
+{
+    std::string key, title;
+    std::shared_ptr<const OccupancyGrid> grid;
+    std::vector<Area> areas;
+};
+
+/// Planner configurations of the tables: name shown, factory name, parameters.
+struct PlannerRow
+{
+    std::string label, name;
+    std::vector<std::pair<std::string, std::string>> params;
+    Rgb colour;
+};
+
+std::vector<PlannerRow> plannerRows()
+{
+    return {{"Dijkstra", "dijkstra", {}, {120, 120, 120}},
+            {"A* Manhattan", "astar-manhattan", {}, {230, 140, 20}},
+            {"A* Euclidean", "astar-euclidean", {}, {220, 30, 30}},
+            {"improved A* (paper)", "improved-astar", {{"mode", "paper"}}, {20, 60, 220}},
+            {"improved A* (integral)", "improved-astar", {{"mode", "integral"}}, {20, 170, 200}},
+            {"corner A*", "corner-astar", {}, {30, 160, 40}}};
+}
+
+/// The free cell centre nearest to (x, y) where the vehicle fits at some multiple of 45 degrees
+/// (that yaw is returned); throws InputError if none within 15 m.
+Pose2 snap(const GridSetup &s, double x, double y, const std::string &what)
+{
+    const OccupancyGrid &g = *s.grid;
+    const Cell c0 = g.worldToCell(x, y);
+    const int maxR = int(std::ceil(15.0 / g.resolution()));
+    for (int rad = 0; rad <= maxR; ++rad)
+        for (int dr = -rad; dr <= rad; ++dr)
+            for (int dc = -rad; dc <= rad; ++dc)
+            {
+                if (std::max(std::abs(dr), std::abs(dc)) != rad) continue;
+                const int c = c0.col + dc, r = c0.row + dr;
+                if (!g.inBounds(c, r) || g.isBlocked(c, r)) continue;
+                for (int a = 0; a < 8; ++a)
+                    if (s.checker->isValid(g.cellCenterX(c), g.cellCenterY(r), GridSE2StateSpace::wrapYaw(a * M_PI / 4)))
+                        return {g.cellCenterX(c), g.cellCenterY(r), GridSE2StateSpace::wrapYaw(a * M_PI / 4)};
+            }
+    throw InputError(what + ": no free pose for the vehicle within 15 m of (" + std::to_string(x) + ", " +
+                     std::to_string(y) + ")");
+}
+
+std::string fmt(double v, int prec)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", prec, v);
+    return buf;
+}
+}  // namespace
+
+int runPaperI(const PaperIOptions &o)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    if (!(o.timeLimit > 0.0) || !std::isfinite(o.timeLimit)) throw InputError("--time-limit must be positive");
+    fs::create_directories(o.outDir);
+    const VehicleParams vehicle = VehicleParams::preset("paper-i");
+    std::vector<MapCase> cases;
+    {
+        auto campus = std::make_shared<const OccupancyGrid>(generateCampus());
+        auto cellXY = [&](int c, int r) { return std::make_pair(campus->cellCenterX(c), campus->cellCenterY(r)); };
+        auto area = [&](const std::string &n, int sc, int sr, int gc, int gr) {
+            const auto s = cellXY(sc, sr), g = cellXY(gc, gr);
+            return Area{n, s.first, s.second, g.first, g.second};
+        };
+        cases.push_back({"campus", "embedded campus (4846 x 2816, 0.298 m/cell)", campus,
+                         {area("1", 2680, 1680, 2470, 1440), area("2", 3047, 1450, 3250, 1668),
+                          area("3", 1700, 1537, 1960, 1650)}});
+    }
+    const fs::path tsu = fs::path(o.sharedDir) / "maps/ros/tsudanuma_campus/tsudanuma_all.yaml";
+    if (fs::exists(tsu))
+    {
+        auto native = std::make_shared<const OccupancyGrid>(loadMap(tsu.string()));
+        auto coarse = std::make_shared<const OccupancyGrid>(native->resampled(0.298));
+        const std::vector<Area> areas = {{"1", 0, -110, 75, -45}, {"2", -5, -98, 75, -45}, {"3", -5, -98, 72, -80}};
+        cases.push_back({"tsudanuma-0.298", "Tsudanuma campus resampled to 0.298 m/cell (" +
+                                                std::to_string(coarse->width()) + " x " + std::to_string(coarse->height()) + ")",
+                         coarse, areas});
+        if (!o.skipNative)
+            cases.push_back({"tsudanuma", "Tsudanuma campus, native 0.05 m/cell (5500 x 4416)", native, areas});
+    }
+    else
+        std::fprintf(stderr, "[paper-i] %s not found: only the embedded campus map is run\n", tsu.string().c_str());
+
+    if (!o.maps.empty())
+    {
+        std::vector<MapCase> chosen;
+        for (const MapCase &mc : cases)
+            if (std::find(o.maps.begin(), o.maps.end(), mc.key) != o.maps.end()) chosen.push_back(mc);
+        if (chosen.empty()) throw InputError("--maps: none of the given maps is available (campus, tsudanuma-0.298, tsudanuma)");
+        cases = chosen;
+    }
+    std::ostringstream md;
+    nlohmann::json all = nlohmann::json::array();
+    const auto t0 = std::chrono::steady_clock::now();
+    for (const MapCase &mc : cases)
+    {
+        std::fprintf(stderr, "[paper-i] %s: distance field and footprint checker...\n", mc.key.c_str());
+        GridSetup setup = makeGridSetup(mc.grid, vehicle);
+        md << "### " << mc.title << "\n\n"
+           << "| area | planner | status | time s | length m | expanded | path distance m | footprint clearance m | "
+              "max turn deg | smoothing s | turns | max curvature 1/m |\n"
+           << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        for (const Area &a : mc.areas)
+        {
+            const Pose2 start = snap(setup, a.sx, a.sy, mc.key + " area " + a.name + " start");
+            const Pose2 goal = snap(setup, a.gx, a.gy, mc.key + " area " + a.name + " goal");
+            std::vector<std::pair<PlannerRow, QueryResult>> results;
+            for (const PlannerRow &pr : plannerRows())
+            {
+                std::fprintf(stderr, "[paper-i] %s area %s: %-24s ", mc.key.c_str(), a.name.c_str(), pr.label.c_str());
+                ompl::base::PlannerPtr planner = makePlanner(setup.ss->getSpaceInformation(), pr.name);
+                planner->params().setParam("free_start_heading", "1");
+                for (const auto &kv : pr.params) planner->params().setParam(kv.first, kv.second);
+                const QueryResult q = runQuery(setup, planner, start, goal, o.timeLimit, false);
+                const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                std::fprintf(stderr, "%s, %.3f s, %.1f m, %llu expanded (elapsed %.0f s)\n", q.status.asString().c_str(),
+                             q.seconds, q.metrics.length, (unsigned long long)q.expanded, elapsed);
+                const bool exact = q.status == ompl::base::PlannerStatus::EXACT_SOLUTION;
+                md << "| " << a.name << " | " << pr.label << " | " << (exact ? "exact" : q.status.asString()) << " | "
+                   << fmt(q.seconds, 3) << " | " << fmt(q.metrics.length, 1) << " | " << q.expanded << " | "
+                   << fmt(q.metrics.minPathDistance, 2) << " | " << fmt(q.metrics.minClearance, 2) << " | "
+                   << fmt(q.maxTurnDeg, 1) << " | " << (q.smoothed ? fmt(q.smoothingSeconds, 4) : std::string("-")) << " | "
+                   << q.metrics.turns << " | " << fmt(q.metrics.maxCurvature, 2) << " |\n";
+                all.push_back({{"map", mc.key}, {"area", a.name}, {"planner", pr.label}, {"status", q.status.asString()},
+                               {"time", q.seconds}, {"length", q.metrics.length}, {"expanded", q.expanded},
+                               {"min_path_distance", q.metrics.minPathDistance}, {"min_clearance", q.metrics.minClearance},
+                               {"max_turn_deg", q.maxTurnDeg}, {"smoothing_time", q.smoothingSeconds},
+                               {"turns", q.metrics.turns}, {"max_curvature", q.metrics.maxCurvature},
+                               {"adjust_failures", q.adjustFailures}, {"bezier_fallbacks", q.bezierFallbacks},
+                               {"start", {start.x, start.y}}, {"goal", {goal.x, goal.y}}});
+                results.push_back({pr, q});
+            }
+            // picture: the area with every planner's path
+            double x0 = std::min(start.x, goal.x), x1 = std::max(start.x, goal.x);
+            double y0 = std::min(start.y, goal.y), y1 = std::max(start.y, goal.y);
+            for (const auto &r : results)
+                for (const Pose2 &p : r.second.path)
+                {
+                    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+                    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+                }
+            const double margin = 12.0, res = mc.grid->resolution();
+            const Cell tl = mc.grid->worldToCell(x0 - margin, y1 + margin);
+            const Cell br = mc.grid->worldToCell(x1 + margin, y0 - margin);
+            const OccupancyGrid crop = mc.grid->cropped(tl.col, tl.row, br.col - tl.col + 1, br.row - tl.row + 1);
+            (void)res;
+            MapCanvas canvas(crop, 1000);
+            for (const auto &r : results)
+            {
+                std::vector<std::pair<double, double>> pts;
+                for (const Pose2 &p : r.second.path) pts.push_back({p.x, p.y});
+                canvas.polyline(pts, r.first.colour, 2);
+            }
+            canvas.disc(start.x, start.y, 6, {0, 0, 0});
+            canvas.disc(goal.x, goal.y, 6, {200, 0, 200});
+            const std::string png = "paper_i_" + mc.key + "_area" + a.name + ".png";
+            canvas.save((fs::path(o.outDir) / png).string());
+            md << "\n";
+            md << "![" << mc.key << " area " << a.name << "](" << png << ")\n\n";
+            if (&a != &mc.areas.back())
+                md << "| area | planner | status | time s | length m | expanded | path distance m | footprint clearance m | "
+                      "max turn deg | smoothing s | turns | max curvature 1/m |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        }
+    }
+    md << "Colours: Dijkstra grey, A* Manhattan orange, A* Euclidean red, improved A* (paper) blue, improved A* "
+          "(integral) cyan, corner A* green; start black, goal magenta.\n";
+    std::ofstream(fs::path(o.outDir) / "paper_i_tables.md") << md.str();
+    std::ofstream(fs::path(o.outDir) / "paper_i.json") << all.dump(1) << "\n";
+    std::fprintf(stderr, "[paper-i] wrote %s/paper_i_tables.md, paper_i.json and the pictures\n", o.outDir.c_str());
+    return 0;
+}
+
+}  // namespace gridcar::cli
