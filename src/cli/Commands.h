@@ -71,6 +71,20 @@ struct ScenOptions
     std::size_t limit{0};  ///< 0: all
     bool json{false};
 };
+struct BenchOptions
+{
+    std::string problem;
+    std::string outDir{"bench-out"};
+    std::string sharedDir{"../shared"};
+    std::string shard;          ///< "K/N" or empty
+    double timeLimit{0.0};      ///< > 0 overrides the problem file's
+    unsigned runs{0};           ///< > 0 overrides the problem file's
+    bool noDatabase{false};     ///< only the .log files
+    std::string reportScript;   ///< empty: the one in the source tree
+};
+/// Benchmark of one problem file; exit 0 also when the problem's shared map is absent (skipped).
+int runBench(const BenchOptions &o);
+
 struct PaperIOptions
 {
     std::string outDir{"paper-i-out"};

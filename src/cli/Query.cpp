@@ -2,6 +2,7 @@
 
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/ImprovedAStar.h"
+#include "gridcar/planners/SmoothedPlanner.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/geometric/PathGeometric.h>
@@ -33,6 +34,12 @@ QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, co
     {
         sm = &ia->lastSmoothing();
         q.rawPath = ia->lastLatticePath();
+    }
+    else if (auto *sp = dynamic_cast<SmoothedPlanner *>(planner.get()); sp && !sp->lastSmoothing().path.empty())
+    {
+        sm = &sp->lastSmoothing();
+        q.rawPath.clear();
+        for (const Pose2 &p : sm->turningPoints) q.rawPath.push_back(p);
     }
     else if (smooth && q.path.size() >= 3)
     {

@@ -77,6 +77,22 @@ int main(int argc, char **argv)
                   "(including a start or goal off the map or in collision), 1 internal error.");
 
     ScenOptions scen;
+    BenchOptions bench;
+    auto *cBench = app.add_subcommand(
+        "bench", "Benchmark the planners of a problem file with ompl::tools::Benchmark: writes the OMPL .log files, "
+                 "the SQLite database (ompl_benchmark_statistics), report.md and plots");
+    cBench->add_option("problem", bench.problem, "Problem file (YAML; see benchmarks/problems/)")->required();
+    cBench->add_option("--out", bench.outDir, "Output folder")->capture_default_str();
+    cBench->add_option("--shared", bench.sharedDir, "Folder substituted for ${shared} in the problem's map path")
+        ->capture_default_str();
+    cBench->add_option("--shard", bench.shard,
+                       "K/N: run only every N-th (query, planner) unit starting at the K-th and write only .log files; "
+                       "merge the shards' logs with ompl_benchmark_statistics");
+    cBench->add_option("--time-limit", bench.timeLimit, "Seconds per run (overrides the problem file)");
+    cBench->add_option("--runs", bench.runs, "Runs per planner (overrides the problem file)");
+    cBench->add_flag("--no-database", bench.noDatabase, "Write only the .log files (no database, no report)");
+    cBench->add_option("--report-script", bench.reportScript, "The report script (default: scripts/bench_report.py of the source tree)");
+
     PaperIOptions paper;
     auto *cPaper = app.add_subcommand(
         "paper-i", "Reproduce paper I's tables: Dijkstra, A* Manhattan / Euclidean, improved A* (paper and integral "
@@ -125,6 +141,7 @@ int main(int argc, char **argv)
         if (*cPlan) return runPlan(plan);
         if (*cScen) return runScen(scen);
         if (*cPaper) return runPaperI(paper);
+        if (*cBench) return runBench(bench);
     }
     catch (const gridcar::MapLoadError &e)
     {

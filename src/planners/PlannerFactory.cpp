@@ -2,6 +2,7 @@
 
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/ImprovedAStar.h"
+#include "gridcar/planners/SmoothedPlanner.h"
 
 #include <ompl/geometric/planners/informedtrees/BITstar.h>
 #include <ompl/geometric/planners/prm/LazyPRMstar.h>
@@ -36,6 +37,9 @@ std::vector<std::string> plannerNames()
 ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name)
 {
     namespace og = ompl::geometric;
+    const std::string suffix = "+smooth";
+    if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+        return std::make_shared<SmoothedPlanner>(makePlanner(si, name.substr(0, name.size() - suffix.size())));
     if (name == "dijkstra") return std::make_shared<GridAStar>(si, GridHeuristic::Zero, name);
     if (name == "astar-manhattan") return std::make_shared<GridAStar>(si, GridHeuristic::Manhattan, name);
     if (name == "astar-euclidean") return std::make_shared<GridAStar>(si, GridHeuristic::Euclidean, name);
@@ -52,7 +56,8 @@ ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, co
     if (name == "informedrrtstar") return std::make_shared<og::InformedRRTstar>(si);
     std::string known;
     for (const auto &n : plannerNames()) known += (known.empty() ? "" : ", ") + n;
-    throw std::invalid_argument("unknown planner '" + name + "' (known: " + known + ")");
+    throw std::invalid_argument("unknown planner '" + name + "' (known: " + known +
+                                "; any of them + \"+smooth\" adds paper I's post-processing)");
 }
 
 }  // namespace gridcar

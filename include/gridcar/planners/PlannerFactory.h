@@ -16,7 +16,8 @@ std::vector<std::string> omplPlannerNames();
 /// Both lists.
 std::vector<std::string> plannerNames();
 
-/// A new planner by name. Throws std::invalid_argument listing the known names.
+/// A new planner by name; "NAME+smooth" wraps planner NAME in a SmoothedPlanner. Throws
+/// std::invalid_argument listing the known names.
 ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name);
 
 }  // namespace gridcar

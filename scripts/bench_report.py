@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""Report of a gridcar benchmark: report.md with one table per problem query and PNG plots
+(every planner's path on the map; box plots), read from the SQLite database that
+ompl_benchmark_statistics built from the OMPL .log files. Run by `gridcar bench`."""
+import argparse
+import json
+import os
+import sqlite3
+import statistics
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.image as mpimg  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+
+METRICS = [  # (column, header, format)
+    ("time", "time s", "{:.3f}"),
+    ("path_length", "length m", "{:.1f}"),
+    ("driving_time", "driving time s", "{:.1f}"),
+    ("min_clearance", "clearance m", "{:.2f}"),
+    ("turns", "turns", "{:.0f}"),
+    ("max_curvature", "max curvature 1/m", "{:.2f}"),
+]
+
+
+def quartiles(values):
+    v = sorted(values)
+    if not v:
+        return None
+    med = statistics.median(v)
+    if len(v) < 2:
+        return med, med, med
+    q = statistics.quantiles(v, n=4, method="inclusive")
+    return q[0], med, q[2]
+
+
+def cell(values, fmt):
+    q = quartiles(values)
+    if q is None:
+        return "-"
+    lo, med, hi = q
+    if len(values) < 2 or hi - lo < 1e-12:
+        return fmt.format(med)
+    return "{} ({}-{})".format(fmt.format(med), fmt.format(lo), fmt.format(hi))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--db", required=True)
+    ap.add_argument("--paths", required=True, help="paths JSON written by gridcar bench")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--title", default="benchmark")
+    a = ap.parse_args()
+
+    con = sqlite3.connect(a.db)
+    cur = con.cursor()
+    cols = {r[1] for r in cur.execute("PRAGMA table_info(runs)")}
+    with open(a.paths) as f:
+        paths = json.load(f)
+    maps = paths.get("_maps", {})
+
+    exps = cur.execute("SELECT id, name, timelimit, runcount FROM experiments ORDER BY id").fetchall()
+    lines = ["# Benchmark report: {}".format(a.title), ""]
+    lines.append("Built from `{}` (OMPL benchmark database; open it with `ompl_benchmark_statistics` "
+                 "or Planner Arena). Cells: median (lower quartile - upper quartile) over the runs "
+                 "that found an exact solution; success = exact solutions / runs. Length: x-y length of the "
+                 "path (OMPL's solution length also counts yaw distance). Driving time: "
+                 "`gridcar::drivingTime` of the path (forward-backward velocity profile); clearance: "
+                 "footprint clearance (m); turns: heading changes above 15 deg over 3 m chords.".format(
+                     os.path.basename(a.db)))
+    lines.append("")
+    for eid, ename, tlimit, runcount in exps:
+        planners = cur.execute(
+            "SELECT DISTINCT p.id, p.name FROM runs r JOIN plannerConfigs p ON r.plannerid = p.id "
+            "WHERE r.experimentid = ? ORDER BY p.id", (eid,)).fetchall()
+        lines.append("## {} (time limit {:g} s, {} runs per planner)".format(ename, tlimit, runcount))
+        lines.append("")
+        hdr = ["planner", "success"] + [h for _, h, _ in METRICS]
+        lines.append("| " + " | ".join(hdr) + " |")
+        lines.append("|" + "---|" * len(hdr))
+        series = {}
+        for pid, pname in planners:
+            label = pname.replace("geometric_", "")
+            sel = ["solved", "approximate_solution"] + [c for c, _, _ in METRICS if c in cols]
+            rows = cur.execute("SELECT {} FROM runs WHERE experimentid = ? AND plannerid = ?".format(
+                ", ".join(sel)), (eid, pid)).fetchall()
+            exact = [r for r in rows if r[0] and not r[1]]
+            vals = {}
+            for i, c in enumerate(sel[2:], start=2):
+                vals[c] = [r[i] for r in exact if r[i] is not None]
+            series[label] = vals
+            row = [label, "{}/{}".format(len(exact), len(rows))]
+            for c, _, fmt in METRICS:
+                row.append(cell(vals.get(c, []), fmt))
+            lines.append("| " + " | ".join(row) + " |")
+        lines.append("")
+
+        # box plots
+        labels = list(series.keys())
+        fig, axes = plt.subplots(1, 4, figsize=(18, 0.35 * len(labels) + 2.5))
+        for ax, (c, h, _) in zip(axes, METRICS[:4]):
+            data = [series[l].get(c, []) or [float("nan")] for l in labels]
+            ax.boxplot(data, vert=False, labels=labels if ax is axes[0] else [""] * len(labels))
+            ax.set_title(h)
+            ax.grid(True, axis="x", alpha=0.3)
+        fig.suptitle(ename)
+        fig.tight_layout()
+        box = "{}-box.png".format(ename)
+        fig.savefig(os.path.join(a.out, box), dpi=90)
+        plt.close(fig)
+
+        # paths on the map
+        m = maps.get(ename)
+        if m:
+            img = mpimg.imread(os.path.join(a.out, m["image"]))
+            x0, x1, y0, y1 = m["extent"]
+            fig, ax = plt.subplots(figsize=(10, 10 * (y1 - y0) / max(x1 - x0, 1e-9) + 0.5))
+            ax.imshow(img, extent=[x0, x1, y0, y1])
+            cmap = plt.get_cmap("tab20")
+            for i, l in enumerate(labels):
+                pts = paths.get("{}|{}".format(ename, l))
+                if not pts:
+                    continue
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], color=cmap(i % 20), lw=1.4, label=l)
+            ax.plot(*m["start"], "ko", ms=7)
+            ax.plot(*m["goal"], "m*", ms=12)
+            ax.set_xlim(x0, x1)
+            ax.set_ylim(y0, y1)
+            ax.set_xlabel("x (m)")
+            ax.set_ylabel("y (m)")
+            ax.legend(fontsize=7, loc="best")
+            ax.set_title("{}: first exact path of each planner".format(ename))
+            fig.tight_layout()
+            pp = "{}-paths.png".format(ename)
+            fig.savefig(os.path.join(a.out, pp), dpi=90)
+            plt.close(fig)
+            lines.append("![paths]({})".format(pp))
+            lines.append("")
+        lines.append("![box plots]({})".format(box))
+        lines.append("")
+    with open(os.path.join(a.out, "report.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

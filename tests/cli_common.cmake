@@ -1,0 +1,16 @@
+# Helpers of the CLI tests (included by cli_plan_test.cmake and cli_bench_test.cmake).
+function(run_gridcar expect_rc)
+  execute_process(COMMAND "${GRIDCAR}" ${ARGN} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+  if(NOT rc EQUAL expect_rc)
+    message(FATAL_ERROR "gridcar ${ARGN}: expected exit ${expect_rc}, got ${rc}\nstdout: ${out}\nstderr: ${err}")
+  endif()
+  set(OUT "${out}" PARENT_SCOPE)
+  set(ERR "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_in text what)
+  string(FIND "${text}" "${what}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "expected '${what}' in: ${text}")
+  endif()
+endfunction()
