@@ -56,6 +56,7 @@ struct Problem
     std::string file, name, map, vehicle{"paper-i"}, objective{"length"};
     bool unknownFree{false};
     double delta{1.0};
+    double resample{0.0};  ///< > 0: resample the map to this many metres per cell
     double timeLimit{5.0};
     double memoryMb{4096.0};
     unsigned runs{3};
@@ -113,6 +114,7 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
         if (y["objective"]) p.objective = y["objective"].as<std::string>();
         if (y["delta"]) p.delta = y["delta"].as<double>();
         if (y["unknown_free"]) p.unknownFree = y["unknown_free"].as<bool>();
+        if (y["resample"]) p.resample = y["resample"].as<double>();
         if (y["time_limit"]) p.timeLimit = y["time_limit"].as<double>();
         if (y["memory_limit_mb"]) p.memoryMb = y["memory_limit_mb"].as<double>();
         if (y["runs"]) p.runs = y["runs"].as<unsigned>();
@@ -147,6 +149,8 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
     if (!(p.timeLimit > 0) || !std::isfinite(p.timeLimit) || p.timeLimit > 86400) bad(p, "time_limit must be in (0, 86400] s");
     if (p.runs == 0 || p.runs > 100000) bad(p, "runs must be in 1..100000");
     if (!(p.memoryMb > 0)) bad(p, "memory_limit_mb must be positive");
+    if (p.resample < 0 || !std::isfinite(p.resample) || (p.resample > 0 && p.resample < 1e-3))
+        bad(p, "resample must be a cell size in metres (>= 0.001)");
     return p;
 }
 
@@ -224,6 +228,7 @@ int runBench(const BenchOptions &o)
 
     std::fprintf(stderr, "[bench] %s: loading %s\n", p.name.c_str(), p.map.c_str());
     auto grid = std::make_shared<OccupancyGrid>(p.map == "embedded" ? generateCampus() : loadMap(p.map));
+    if (p.resample > 0) *grid = grid->resampled(p.resample);
     grid->setUnknownIsFree(p.unknownFree);
     VehicleParams vehicle;
     try

@@ -15,7 +15,8 @@
 int main(int argc, char **argv)
 {
     using namespace gridcar::cli;
-    CLI::App app{"gridcar: vehicle-aware grid planners for OMPL (grid A* baselines, corner-weighted A*).\n"
+    CLI::App app{"gridcar: vehicle-aware grid planners for OMPL (grid A* baselines, corner-weighted A*, improved A*) "
+                 "and a benchmark harness against OMPL's sampling planners.\n"
                  "Maps: ROS map_server .yaml (+ PGM/PNG), Moving AI .map, plain .ppm/.pgm/.png (dark = occupied)."};
     app.require_subcommand(1);
 
@@ -39,7 +40,7 @@ int main(int argc, char **argv)
 
     DemoOptions demo;
     auto *cDemo = app.add_subcommand(
-        "demo", "Main job: load the map (default: embedded campus), build distance field, Voronoi diagram and "
+        "demo", "Load the map (default: embedded campus), build distance field, Voronoi diagram and "
                 "footprint checker, print a summary and write pictures");
     cDemo->add_option("--map", demo.map, "Map file (default: the embedded campus map)");
     cDemo->add_option("--out", demo.outDir, "Output folder")->capture_default_str();
