@@ -53,14 +53,31 @@ double speedLimit(const VehicleParams &v, double theta, double window)
     return std::clamp(lim, 1e-3, V);
 }
 
+double VelocityProfile::speedAt(double at) const
+{
+    if (s.empty() || at < s.front() || at > s.back()) return 0.0;
+    const auto it = std::upper_bound(s.begin(), s.end(), at);
+    if (it == s.end()) return v.back();
+    const std::size_t i = std::size_t(it - s.begin());
+    if (i == 0) return v.front();
+    const double t = (at - s[i - 1]) / std::max(s[i] - s[i - 1], 1e-12);
+    return v[i - 1] + t * (v[i] - v[i - 1]);
+}
+
 double drivingTime(const std::vector<Pose2> &path, const VehicleParams &v, const DrivingTimeParams &p)
 {
+    return velocityProfile(path, v, p).time;
+}
+
+VelocityProfile velocityProfile(const std::vector<Pose2> &path, const VehicleParams &v, const DrivingTimeParams &p)
+{
+    VelocityProfile prof;
     if (!(v.maxSpeed > 0) || !(v.acceleration > 0) || !(v.deceleration > 0))
         throw std::invalid_argument("drivingTime needs max_speed, acceleration and deceleration > 0");
     std::vector<Pose2> pts;
     for (const Pose2 &q : path)
         if (pts.empty() || std::hypot(q.x - pts.back().x, q.y - pts.back().y) > 1e-9) pts.push_back(q);
-    if (pts.size() < 2) return 0.0;
+    if (pts.size() < 2) return prof;
     // resample by arc length
     std::vector<double> xs, ys;
     double total = 0;
@@ -108,7 +125,12 @@ double drivingTime(const std::vector<Pose2> &path, const VehicleParams &v, const
         vel[k] = std::min(vel[k], std::sqrt(vel[k + 1] * vel[k + 1] + 2 * v.deceleration * ds));
     double time = 0;
     for (int k = 1; k < N; ++k) time += 2 * ds / std::max(vel[k - 1] + vel[k], 1e-9);
-    return time;
+    prof.time = time;
+    prof.x = xs;
+    prof.y = ys;
+    prof.v = vel;
+    for (int k = 0; k < N; ++k) prof.s.push_back(k * ds);
+    return prof;
 }
 
 DrivingTimeObjective::DrivingTimeObjective(const ob::SpaceInformationPtr &si, const VehicleParams &vehicle)

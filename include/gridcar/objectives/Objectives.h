@@ -53,6 +53,19 @@ struct DrivingTimeParams
 /// degrees), since paper C's vehicle takes a grid corner on its own, wider line; at most v_max.
 double speedLimit(const VehicleParams &v, double thetaRad, double window);
 
+/// A speed profile along a path: samples at arc length s (m) with position and speed (m/s).
+struct VelocityProfile
+{
+    std::vector<double> s, x, y, v;
+    double time{0.0};  ///< s, driving time of the whole profile
+    /// Speed at arc length @p at (linear between samples; 0 outside).
+    double speedAt(double at) const;
+};
+
+/// The profile drivingTime() integrates (see there).
+VelocityProfile velocityProfile(const std::vector<Pose2> &path, const VehicleParams &v,
+                                const DrivingTimeParams &params = DrivingTimeParams());
+
 /**
  * @brief Time (s) the vehicle needs to drive @p path: the path is resampled every
  * DrivingTimeParams::sampleStep; each sample gets a speed limit from the heading change between

@@ -1,0 +1,160 @@
+#include "gridcar/sim/Simulation.h"
+
+#include "gridcar/io/Image.h"
+#include "gridcar/spaces/Setup.h"
+#include "TestData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using namespace gridcar;
+
+namespace
+{
+/// A straight road along x: width w metres, length len metres, 0.25 m cells, curbs top and bottom.
+GridSetup road(double len, double w, const std::string &vehicle = "paper-c-robot")
+{
+    const double res = 0.25;
+    const int W = int(len / res), H = int((w + 2.0) / res);
+    auto g = std::make_shared<OccupancyGrid>(W, H, res);
+    for (int c = 0; c < W; ++c)
+    {
+        g->set(c, 0, CellState::Occupied);
+        g->set(c, H - 1, CellState::Occupied);
+    }
+    return makeGridSetup(g, VehicleParams::preset(vehicle));
+}
+
+std::vector<Pose2> straight(double x0, double x1, double y, double step = 0.25)
+{
+    std::vector<Pose2> p;
+    for (double x = x0; x <= x1 + 1e-9; x += step) p.push_back({x, y, 0.0});
+    return p;
+}
+}  // namespace
+
+TEST(Simulation, BicycleTurnsOnTheCircleItsSteeringImplies)
+{
+    VehicleParams v = VehicleParams::preset("paper-i");
+    VehicleState s;
+    s.v = 2.0;
+    s.steer = 0.3;
+    const double dt = 0.01;
+    double yaw0 = s.yaw;
+    for (int i = 0; i < 100; ++i) s = stepBicycle(s, v, 0.3, 2.0, dt);
+    // 1 s at 2 m/s on radius wheelbase / tan(0.3): yaw advances by 2 tan(0.3) / 1.56 rad
+    EXPECT_NEAR(s.yaw - yaw0, 2.0 * std::tan(0.3) / v.wheelbase, 1e-9);
+    // limits: the steering rate and the acceleration
+    VehicleState r;
+    r = stepBicycle(r, v, 1.0, 100.0, 0.1);
+    EXPECT_NEAR(r.steer, v.maxSteerRateDeg * M_PI / 180 * 0.1, 1e-12);
+    EXPECT_NEAR(r.v, v.acceleration * 0.1, 1e-12);
+}
+
+TEST(Simulation, StraightRoadDrivingTimeMatchesTheClosedForm)
+{
+    GridSetup s = road(100.0, 6.0);
+    const VehicleParams &v = s.checker->vehicle();  // paper C's robot: 0.6 m/s, 0.3 m/s^2 both ways
+    const double y = s.grid->cellCenterY(s.grid->height() / 2);
+    const auto path = straight(5.0, 95.0, y);
+    FollowerParams fp;
+    const DriveResult r = drivePath(path, *s.checker, Scenario(), fp);
+    ASSERT_EQ(r.outcome, DriveResult::Outcome::Reached) << r.reason;
+    const double L = 90.0, V = v.maxSpeed, a = v.acceleration, d = v.deceleration;
+    const double closed = V / a + V / d + (L - V * V / (2 * a) - V * V / (2 * d)) / V;  // 152 s
+    std::printf("straight road: simulated %.3f s, closed form %.3f s\n", r.drivingTime, closed);
+    EXPECT_NEAR(r.drivingTime, closed, 2 * fp.dt);
+    EXPECT_LT(r.crossTrackMax, 0.01);
+    // deterministic
+    const DriveResult r2 = drivePath(path, *s.checker, Scenario(), fp);
+    EXPECT_EQ(r2.drivingTime, r.drivingTime);
+    EXPECT_EQ(r2.trajectory.size(), r.trajectory.size());
+}
+
+TEST(Simulation, MovingObstacleCrossingIsAvoidedAndTheVehicleReturnsToThePath)
+{
+    GridSetup s = road(60.0, 8.0);
+    const double y = s.grid->cellCenterY(s.grid->height() / 2);
+    const auto path = straight(3.0, 57.0, y);
+    // a pedestrian crossing the road at x = 25 m, timed to meet the robot there
+    // (the robot needs about 2 + 40 s to reach x = 25 m)
+    Scenario sc;
+    MovingObstacle ped;
+    ped.name = "pedestrian";
+    ped.radius = 0.3;
+    ped.waypoints = {{25.0, y - 4.5}, {25.0, y + 4.5}};
+    ped.speed = 0.25;
+    ped.startTime = 24.0;
+    sc.obstacles.push_back(ped);
+    const DriveResult r = drivePath(path, *s.checker, sc);
+    std::printf("crossing: %s, %.1f s, cross-track max %.2f m, min clearance %.2f m\n",
+                DriveResult::outcomeName(r.outcome).c_str(), r.drivingTime, r.crossTrackMax, r.minClearance);
+    ASSERT_EQ(r.outcome, DriveResult::Outcome::Reached) << r.reason;
+    EXPECT_GT(r.minClearance, 0.0);
+    // it did react (left the line or slowed) ...
+    const DriveResult free = drivePath(path, *s.checker, Scenario());
+    EXPECT_TRUE(r.crossTrackMax > 0.05 || r.drivingTime > free.drivingTime + 1.0);
+    // ... and came back: the last 10 m are on the path
+    for (const TrajectorySample &q : r.trajectory)
+        if (q.x > 47.0) EXPECT_LT(std::abs(q.y - y), 0.15) << "at x = " << q.x;
+}
+
+TEST(Simulation, LocalMinimumTrapEndsAsStuckNeverEndlessly)
+{
+    // a cup-shaped wall across the road, open towards the vehicle; the given path runs through it
+    GridSetup s = road(40.0, 10.0);
+    auto g = std::const_pointer_cast<OccupancyGrid>(s.grid);
+    const double y = s.grid->cellCenterY(s.grid->height() / 2);
+    OccupancyGrid trap = *s.grid;
+    const Cell c = trap.worldToCell(20.0, y);
+    for (int r = c.row - 12; r <= c.row + 12; ++r) trap.set(c.col, r, CellState::Occupied);
+    for (int k = 0; k < 16; ++k)
+    {
+        trap.set(c.col - k, c.row - 12, CellState::Occupied);
+        trap.set(c.col - k, c.row + 12, CellState::Occupied);
+    }
+    GridSetup t = makeGridSetup(std::make_shared<OccupancyGrid>(trap), VehicleParams::preset("paper-c-robot"));
+    FollowerParams fp;
+    fp.stuckWindow = 4.0;
+    fp.maxRecoveries = 2;
+    const DriveResult r = drivePath(straight(3.0, 37.0, y), *t.checker, Scenario(), fp);
+    std::printf("trap: %s after %.1f s (%s), %d recoveries\n", DriveResult::outcomeName(r.outcome).c_str(), r.drivingTime,
+                r.reason.c_str(), r.recoveries);
+    EXPECT_TRUE(r.outcome == DriveResult::Outcome::Stuck || r.outcome == DriveResult::Outcome::Reached) << r.reason;
+    EXPECT_NE(r.outcome, DriveResult::Outcome::Collided) << r.reason;
+    EXPECT_LT(r.drivingTime, 60.0 + 5.0 * 34.0 / 0.6);
+}
+
+TEST(Simulation, ScenarioFilesAreReadAndBadOnesNamed)
+{
+    const std::filesystem::path dir = std::filesystem::path(GRIDCAR_TEST_TMP) / "scenario";
+    std::filesystem::create_directories(dir);
+    const std::string good = (dir / "good.yaml").string();
+    std::ofstream(good) << "obstacles:\n"
+                           "  - {name: ped, shape: disc, radius: 0.4, waypoints: [[0, 0], [10, 0]], speed: 2, start_time: 1}\n"
+                           "  - {shape: box, size: [2, 1], waypoints: [[5, 5]]}\n";
+    const Scenario sc = Scenario::load(good);
+    ASSERT_EQ(sc.obstacles.size(), 2u);
+    double x, y;
+    sc.obstacles[0].positionAt(3.0, x, y);  // 2 s of travel at 2 m/s
+    EXPECT_NEAR(x, 4.0, 1e-12);
+    EXPECT_NEAR(sc.obstacles[0].distanceFrom(4.0, 1.0, 3.0), 0.6, 1e-12);
+    EXPECT_NEAR(sc.obstacles[1].distanceFrom(5.0, 7.0, 0.0), 1.5, 1e-12);
+    const std::string bad = (dir / "bad.yaml").string();
+    std::ofstream(bad) << "obstacles:\n  - {shape: triangle, waypoints: [[0, 0]]}\n";
+    try
+    {
+        Scenario::load(bad);
+        FAIL();
+    }
+    catch (const MapLoadError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("bad.yaml: obstacle 1: shape must be disc or box"), std::string::npos) << e.what();
+    }
+    std::ofstream(bad) << "obstacles:\n  - {radius: -1, waypoints: [[0, 0]]}\n";
+    EXPECT_THROW(Scenario::load(bad), MapLoadError);
+    EXPECT_THROW(Scenario::load((dir / "missing.yaml").string()), MapLoadError);
+}
