@@ -18,6 +18,7 @@ METRICS = [  # (column, header, format)
     ("time", "time s", "{:.3f}"),
     ("path_length", "length m", "{:.1f}"),
     ("driving_time", "driving time s", "{:.1f}"),
+    ("sim_driving_time", "simulated s", "{:.1f}"),
     ("min_clearance", "clearance m", "{:.2f}"),
     ("turns", "turns", "{:.0f}"),
     ("max_curvature", "max curvature 1/m", "{:.2f}"),
@@ -66,7 +67,9 @@ def main():
                  "or Planner Arena). Cells: median (lower quartile - upper quartile) over the runs "
                  "that found an exact solution; success = exact solutions / runs. Length: x-y length of the "
                  "path (OMPL's solution length also counts yaw distance). Driving time: "
-                 "`gridcar::drivingTime` of the path (forward-backward velocity profile); clearance: "
+                 "`gridcar::drivingTime` of the path (forward-backward velocity profile); simulated: the time "
+                 "paper C's potential-field follower needs to drive it in the kinematic simulation (runs it "
+                 "did not finish are left out; see sim_reached in the database); clearance: "
                  "footprint clearance (m); turns: heading changes above 15 deg over 3 m chords.".format(
                      os.path.basename(a.db)))
     lines.append("")
@@ -98,8 +101,9 @@ def main():
 
         # box plots
         labels = list(series.keys())
-        fig, axes = plt.subplots(1, 4, figsize=(18, 0.35 * len(labels) + 2.5))
-        for ax, (c, h, _) in zip(axes, METRICS[:4]):
+        boxed = [m for m in METRICS if m[0] in ("time", "path_length", "driving_time", "sim_driving_time", "min_clearance")]
+        fig, axes = plt.subplots(1, len(boxed), figsize=(4.5 * len(boxed), 0.35 * len(labels) + 2.5))
+        for ax, (c, h, _) in zip(axes, boxed):
             data = [series[l].get(c, []) or [float("nan")] for l in labels]
             ax.boxplot(data, vert=False, labels=labels if ax is axes[0] else [""] * len(labels))
             ax.set_title(h)

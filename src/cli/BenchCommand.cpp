@@ -9,6 +9,7 @@
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/sim/Simulation.h"
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"
 
@@ -339,6 +340,12 @@ int runBench(const BenchOptions &o)
             run["min clearance REAL"] = std::to_string(m.minClearance);
             run["path distance REAL"] = std::to_string(m.minPathDistance);
             run["driving time REAL"] = std::to_string(drivingTime(poses, vehicle));
+            // the path driven by paper C's potential-field follower in the kinematic simulation
+            FollowerParams fp;
+            fp.recordTrajectory = false;
+            const DriveResult dr = drivePath(poses, *setup.checker, Scenario(), fp);
+            run["sim reached BOOLEAN"] = dr.outcome == DriveResult::Outcome::Reached ? "1" : "0";
+            if (dr.outcome == DriveResult::Outcome::Reached) run["sim driving time REAL"] = std::to_string(dr.drivingTime);
             if (auto *gp = dynamic_cast<GridPlanner *>(pl.get())) run["expanded nodes INTEGER"] = std::to_string(gp->expandedNodes());
             const std::string key = expName + "|" + pl->getName();
             if (!pathsJson.contains(key) && !pdef->hasApproximateSolution())

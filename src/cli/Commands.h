@@ -71,6 +71,31 @@ struct ScenOptions
     std::size_t limit{0};  ///< 0: all
     bool json{false};
 };
+struct DriveOptions
+{
+    PlanOptions plan;          ///< map, planner, start / goal, vehicle, params, time limit, smooth
+    std::string pathCsv;       ///< drive this path (x,y[,yaw] CSV) instead of planning
+    std::string scenario;      ///< moving obstacles (YAML)
+    double dt{0.05};
+    bool json{false};
+    std::string png;
+    std::string trajectoryCsv;
+};
+/// Exit status: 0 reached, 3 collided / stuck / timeout (or no plan), 2 bad input.
+int runDrive(const DriveOptions &o);
+
+struct PaperCOptions
+{
+    std::string outDir{"paper-c-out"};
+    std::string sharedDir{"../shared"};
+    int pairs{20};
+    unsigned long long seed{1};
+    double timeLimit{20.0};
+};
+/// Paper C's driving-time comparison: plain A* against corner-weighted A*, driven in the
+/// simulation, on the embedded campus and the Tsudanuma map; and a corner-weight sweep.
+int runPaperC(const PaperCOptions &o);
+
 struct BenchOptions
 {
     std::string problem;

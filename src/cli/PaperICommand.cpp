@@ -57,23 +57,46 @@ std::vector<PlannerRow> plannerRows()
             {"corner A*", "corner-astar", {}, {30, 160, 40}}};
 }
 
-/// The free cell centre nearest to (x, y) where the vehicle fits at some multiple of 45 degrees
-/// (that yaw is returned); throws InputError if none within 15 m.
+/// A start / goal near (x, y) in the middle of the road: of the cells within 4 m where the
+/// vehicle fits at some multiple of 45 degrees, the one farthest from obstacles (so that the
+/// query's end points do not decide every planner's clearance); failing that, the nearest such
+/// cell within 15 m. Throws InputError if there is none.
 Pose2 snap(const GridSetup &s, double x, double y, const std::string &what)
 {
     const OccupancyGrid &g = *s.grid;
     const Cell c0 = g.worldToCell(x, y);
+    auto fits = [&](int c, int r, double &yaw) {
+        if (!g.inBounds(c, r) || g.isBlocked(c, r)) return false;
+        for (int a = 0; a < 8; ++a)
+        {
+            yaw = GridSE2StateSpace::wrapYaw(a * M_PI / 4);
+            if (s.checker->isValid(g.cellCenterX(c), g.cellCenterY(r), yaw)) return true;
+        }
+        return false;
+    };
+    const int near = int(std::ceil(4.0 / g.resolution()));
+    double bestD = -1.0;
+    Pose2 best{};
+    for (int dr = -near; dr <= near; ++dr)
+        for (int dc = -near; dc <= near; ++dc)
+        {
+            if (std::hypot(dc, dr) > near) continue;
+            const int c = c0.col + dc, r = c0.row + dr;
+            double yaw;
+            if (!g.inBounds(c, r) || s.field->cellDistance(c, r) <= bestD || !fits(c, r, yaw)) continue;
+            bestD = s.field->cellDistance(c, r);
+            best = {g.cellCenterX(c), g.cellCenterY(r), yaw};
+        }
+    if (bestD >= 0) return best;
     const int maxR = int(std::ceil(15.0 / g.resolution()));
-    for (int rad = 0; rad <= maxR; ++rad)
+    for (int rad = near; rad <= maxR; ++rad)
         for (int dr = -rad; dr <= rad; ++dr)
             for (int dc = -rad; dc <= rad; ++dc)
             {
                 if (std::max(std::abs(dr), std::abs(dc)) != rad) continue;
-                const int c = c0.col + dc, r = c0.row + dr;
-                if (!g.inBounds(c, r) || g.isBlocked(c, r)) continue;
-                for (int a = 0; a < 8; ++a)
-                    if (s.checker->isValid(g.cellCenterX(c), g.cellCenterY(r), GridSE2StateSpace::wrapYaw(a * M_PI / 4)))
-                        return {g.cellCenterX(c), g.cellCenterY(r), GridSE2StateSpace::wrapYaw(a * M_PI / 4)};
+                double yaw;
+                if (fits(c0.col + dc, c0.row + dr, yaw))
+                    return {g.cellCenterX(c0.col + dc), g.cellCenterY(c0.row + dr), yaw};
             }
     throw InputError(what + ": no free pose for the vehicle within 15 m of (" + std::to_string(x) + ", " +
                      std::to_string(y) + ")");

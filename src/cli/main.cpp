@@ -78,6 +78,42 @@ int main(int argc, char **argv)
                   "(including a start or goal off the map or in collision), 1 internal error.");
 
     ScenOptions scen;
+    DriveOptions drive;
+    auto *cDrive = app.add_subcommand(
+        "drive", "Plan a path (or read one) and drive it with paper C's potential-field follower in the kinematic "
+                 "bicycle simulation, with optional moving obstacles");
+    cDrive->add_option("--map", drive.plan.map, "Map file")->required();
+    cDrive->add_option("--planner", drive.plan.planner, plannerList + " (or NAME+smooth)");
+    cDrive->add_option("--path", drive.pathCsv, "Drive this path instead of planning: CSV x,y[,yaw] (as plan --out writes)");
+    cDrive->add_option("--start", drive.plan.start, "Start X,Y[,YAW_DEG] (world frame, m)");
+    cDrive->add_option("--start-cell", drive.plan.startCell, "Start COL,ROW[,HEADING_DEG]");
+    cDrive->add_option("--goal", drive.plan.goal, "Goal X,Y[,YAW_DEG]");
+    cDrive->add_option("--goal-cell", drive.plan.goalCell, "Goal COL,ROW[,HEADING_DEG]");
+    cDrive->add_option("--vehicle", drive.plan.vehicle, "paper-i, paper-c-car, paper-c-robot, point, or a YAML file")
+        ->capture_default_str();
+    cDrive->add_option("--param", drive.plan.params, "NAME=VALUE: a declared planner parameter (repeatable)");
+    cDrive->add_option("--time-limit", drive.plan.timeLimit, "Planning time limit, s")->capture_default_str();
+    cDrive->add_flag("--smooth", drive.plan.smooth, "Post-process the planned path as paper I does before driving it");
+    cDrive->add_flag("--unknown-free", drive.plan.unknownFree, "Treat unknown cells as free");
+    cDrive->add_option("--scenario", drive.scenario, "Moving obstacles (YAML: obstacles: [{shape, radius | size, waypoints, speed, start_time, loop}])");
+    cDrive->add_option("--dt", drive.dt, "Simulation step, s")->capture_default_str();
+    cDrive->add_flag("--json", drive.json,
+                     "Print one JSON object: outcome (reached | collided | stuck | timeout), reason, driving_time, path_length, "
+                     "distance_driven, cross_track_mean, cross_track_max, min_clearance, recoveries, plan {...}");
+    cDrive->add_option("--png", drive.png, "Picture of the path (blue), the trajectory (red) and the moving obstacles (orange)");
+    cDrive->add_option("--out", drive.trajectoryCsv, "Trajectory CSV: t,x,y,yaw,v,steer");
+
+    PaperCOptions paperC;
+    auto *cPaperC = app.add_subcommand(
+        "paper-c", "Reproduce paper C's driving-time comparison: A* Euclidean against corner A* (paper and physics "
+                   "weights) on random road pairs, driven in the simulation by paper C's robot and car, on the embedded "
+                   "campus and the Tsudanuma map; plus a corner-weight sweep. Writes paper_c_tables.md and paper_c.json");
+    cPaperC->add_option("--out", paperC.outDir, "Output folder")->capture_default_str();
+    cPaperC->add_option("--shared", paperC.sharedDir, "Folder holding maps/ros/tsudanuma_campus")->capture_default_str();
+    cPaperC->add_option("--pairs", paperC.pairs, "Start / goal pairs per map and vehicle")->capture_default_str();
+    cPaperC->add_option("--seed", paperC.seed, "Seed of the pairs")->capture_default_str();
+    cPaperC->add_option("--time-limit", paperC.timeLimit, "Planning time limit per query, s")->capture_default_str();
+
     BenchOptions bench;
     auto *cBench = app.add_subcommand(
         "bench", "Benchmark the planners of a problem file with ompl::tools::Benchmark: writes the OMPL .log files, "
@@ -143,6 +179,8 @@ int main(int argc, char **argv)
         if (*cScen) return runScen(scen);
         if (*cPaper) return runPaperI(paper);
         if (*cBench) return runBench(bench);
+        if (*cDrive) return runDrive(drive);
+        if (*cPaperC) return runPaperC(paperC);
     }
     catch (const gridcar::MapLoadError &e)
     {

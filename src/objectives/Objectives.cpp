@@ -42,13 +42,13 @@ double speedLimit(const VehicleParams &v, double theta, double window)
     double lim = alat > 0 ? std::sqrt(alat * r) : V;
     if (v.cornerSpeed45 > 0 || v.cornerSpeed90 > 0 || v.cornerSpeed135 > 0)
     {
-        // the vehicle's corner speeds: how fast it takes a corner of this angle on its own line
+        // the vehicle's corner speeds cap the speed through a corner of this angle
         const double deg = std::min(theta * 180.0 / M_PI, 180.0);
         const double pts[4] = {V, v.cornerSpeed45 > 0 ? v.cornerSpeed45 : V, v.cornerSpeed90 > 0 ? v.cornerSpeed90 : V,
                                v.cornerSpeed135 > 0 ? v.cornerSpeed135 : (v.cornerSpeed90 > 0 ? v.cornerSpeed90 : V)};
         const double k = std::min(deg / 45.0, 3.0);
         const int i = std::min(int(k), 2);
-        lim = std::max(lim, pts[i] + (pts[i + 1] - pts[i]) * (k - i));
+        lim = std::min(lim, pts[i] + (pts[i + 1] - pts[i]) * (k - i));
     }
     return std::clamp(lim, 1e-3, V);
 }

@@ -48,9 +48,11 @@ struct DrivingTimeParams
 
 /// The speed limit of @p v through a heading change of @p thetaRad over a window of arc
 /// length 2 x @p window: sqrt(a_lat r) with r = max(2 window / theta, R_min) (a_lat = min(mu g,
-/// max_lateral_accel)); for a vehicle with corner speeds (paper C's), the larger of that and its
-/// corner speed for the angle (interpolated linearly between 0 (v_max), 45, 90 and 135
-/// degrees), since paper C's vehicle takes a grid corner on its own, wider line; at most v_max.
+/// max_lateral_accel)); for a vehicle with corner speeds (paper C's), also at most its corner
+/// speed for the angle (interpolated linearly between 0 (v_max), 45, 90 and 135 degrees); at
+/// most v_max. A sharp polyline corner thus costs the speed of a turn at R_min (the vehicle
+/// follows the path), a smooth curve of radius r the speed sqrt(a_lat r): paper C's 6 m/s at
+/// 90 degrees is the speed on its 15 m radius.
 double speedLimit(const VehicleParams &v, double thetaRad, double window);
 
 /// A speed profile along a path: samples at arc length s (m) with position and speed (m/s).

@@ -1,0 +1,27 @@
+#pragma once
+// Helpers shared by the CLI commands: poses, vehicles, planners and their parameters.
+#include "Commands.h"
+
+#include "gridcar/spaces/Setup.h"
+
+#include <ompl/base/Planner.h>
+
+#include <string>
+#include <vector>
+
+namespace gridcar::cli
+{
+/// "A,B[,C]" -> numbers; throws InputError naming the option.
+std::vector<double> parseNumbers(const std::string &text, const std::string &option, std::size_t minN, std::size_t maxN);
+/// A pose from --X (world X,Y[,YAW_DEG]) or --X-cell (COL,ROW[,DEG]); exactly one must be given.
+Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,
+                bool &hasYaw);
+/// "(x, y, yaw deg)".
+std::string describe(const Pose2 &p);
+/// A preset or vehicle file; InputError on failure.
+VehicleParams loadVehicle(const std::string &v);
+/// makePlanner() with InputError for unknown names.
+ompl::base::PlannerPtr plannerByName(const GridSetup &setup, const std::string &name);
+/// --param NAME=VALUE settings; InputError listing the planner's parameters on an unknown name.
+void applyParams(ompl::base::Planner &planner, const std::vector<std::string> &params);
+}  // namespace gridcar::cli
