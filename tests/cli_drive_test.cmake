@@ -1,0 +1,48 @@
+# gridcar drive / paper-i / paper-c on the campus map (generated here): outcomes, JSON fields,
+# a moving obstacle, a given path, bad scenario and path files.
+include("${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake")
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+run_gridcar(0 genmap --out "${WORK}/campus.yaml")
+set(Q --map "${WORK}/campus.yaml" --vehicle paper-c-robot --start 506.749,380.993 --goal 584.229,347.319)
+
+run_gridcar(0 drive ${Q} --planner corner-astar --json --png "${WORK}/d.png" --out "${WORK}/traj.csv")
+foreach(key "\"outcome\":\"reached\"" "\"driving_time\":" "\"path_length\":" "\"cross_track_mean\":"
+            "\"cross_track_max\":" "\"min_clearance\":" "\"plan\":{" "\"planner\":\"corner-astar\"")
+  expect_in("${OUT}" "${key}")
+endforeach()
+foreach(f d.png traj.csv)
+  if(NOT EXISTS "${WORK}/${f}")
+    message(FATAL_ERROR "drive did not write ${f}")
+  endif()
+endforeach()
+
+# a pedestrian crossing the road the robot takes: avoided, goal reached
+file(WRITE "${WORK}/ped.yaml" "obstacles:\n  - {name: pedestrian, shape: disc, radius: 0.3, waypoints: [[545, 355], [545, 372]], speed: 0.3, start_time: 60}\n")
+run_gridcar(0 drive ${Q} --planner corner-astar --scenario "${WORK}/ped.yaml" --json)
+expect_in("${OUT}" "\"outcome\":\"reached\"")
+
+# a given path
+run_gridcar(0 plan ${Q} --planner astar-euclidean --out "${WORK}/p.csv")
+run_gridcar(0 drive --map "${WORK}/campus.yaml" --vehicle paper-c-robot --path "${WORK}/p.csv")
+expect_in("${OUT}" "reached")
+
+# bad input: exit 2 naming the file
+file(WRITE "${WORK}/bad.yaml" "obstacles:\n  - {shape: triangle, waypoints: [[0, 0]]}\n")
+run_gridcar(2 drive ${Q} --planner corner-astar --scenario "${WORK}/bad.yaml")
+expect_in("${ERR}" "bad.yaml: obstacle 1: shape must be disc or box")
+file(WRITE "${WORK}/bad.csv" "x,y\n1,2\nthree,4\n")
+run_gridcar(2 drive --map "${WORK}/campus.yaml" --path "${WORK}/bad.csv")
+expect_in("${ERR}" "bad.csv: line 3")
+run_gridcar(2 drive ${Q} --planner corner-astar --dt 0)
+expect_in("${ERR}" "--dt")
+
+# paper-i on the embedded campus only (no shared folder): tables with all six configurations
+run_gridcar(0 paper-i --maps campus --shared "${WORK}/none" --out "${WORK}/p1" --time-limit 10)
+file(READ "${WORK}/p1/paper_i_tables.md" t)
+foreach(p "Dijkstra" "A* Manhattan" "A* Euclidean" "improved A* (paper)" "improved A* (integral)" "corner A*")
+  expect_in("${t}" "| ${p} | exact |")
+endforeach()
+if(NOT EXISTS "${WORK}/p1/paper_i_campus_area3.png")
+  message(FATAL_ERROR "paper-i did not draw the areas")
+endif()
