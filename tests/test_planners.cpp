@@ -1,5 +1,6 @@
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/planners/SmoothedPlanner.h"
 
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
@@ -460,4 +461,37 @@ TEST(CornerAStar, FewerHeadingChangesThanAStarEuclideanOnCampusQueries)
     EXPECT_GE(fewer, queries - 1);
     std::printf("heading changes over %d campus queries: corner-astar %d, astar-euclidean %d\n", queries, totalCorner,
                 totalEuclid);
+}
+
+// ---------------------------------------------------------------- NAME+smooth
+
+TEST(Planners, SmoothSuffixWrapsAnyPlannerInPaperIsPostProcessing)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    auto g = std::make_shared<OccupancyGrid>(80, 60, 0.25);
+    for (int r = 0; r < 40; ++r) g->set(40, r, CellState::Occupied);  // a wall to go round
+    GridSetup s = makeGridSetup(g, VehicleParams::preset("paper-c-robot"));
+    for (const std::string name : {"astar-euclidean+smooth", "rrtconnect+smooth"})
+    {
+        auto p = makePlanner(s.ss->getSpaceInformation(), name);
+        auto *sp = dynamic_cast<SmoothedPlanner *>(p.get());
+        ASSERT_NE(sp, nullptr) << name;
+        EXPECT_EQ(p->getName(), name);
+        s.ss->clear();
+        s.ss->setPlanner(p);
+        s.setStartAndGoal(cellPose(*g, 10, 10), cellPose(*g, 70, 10));
+        ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION) << name;
+        const auto &path = s.ss->getSolutionPath();
+        ASSERT_EQ(path.getStateCount(), sp->lastSmoothing().path.size()) << name;
+        EXPECT_TRUE(path.check()) << name;
+        for (std::size_t i = 1; i < sp->lastSmoothing().path.size(); ++i)
+            EXPECT_TRUE(s.checker->isMotionValid(sp->lastSmoothing().path[i - 1], sp->lastSmoothing().path[i]));
+        if (sp->lastSmoothing().adjustFailures + sp->lastSmoothing().bezierFallbacks == 0)
+            EXPECT_LE(sp->lastSmoothing().maxCurvature, s.checker->vehicle().maxCurvature() * 1.001) << name;
+    }
+    // parameters are the inner planner's
+    auto c = makePlanner(s.ss->getSpaceInformation(), "corner-astar+smooth");
+    EXPECT_TRUE(c->params().setParam("corner_weight_90", "3.5"));
+    EXPECT_EQ(dynamic_cast<SmoothedPlanner *>(c.get())->inner()->params().getParam("corner_weight_90")->getValue(), "3.5");
+    EXPECT_THROW(makePlanner(s.ss->getSpaceInformation(), "nothing+smooth"), std::invalid_argument);
 }

@@ -39,7 +39,11 @@ ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, co
     namespace og = ompl::geometric;
     const std::string suffix = "+smooth";
     if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
-        return std::make_shared<SmoothedPlanner>(makePlanner(si, name.substr(0, name.size() - suffix.size())));
+    {
+        auto p = std::make_shared<SmoothedPlanner>(makePlanner(si, name.substr(0, name.size() - suffix.size())));
+        p->setName(name);
+        return p;
+    }
     if (name == "dijkstra") return std::make_shared<GridAStar>(si, GridHeuristic::Zero, name);
     if (name == "astar-manhattan") return std::make_shared<GridAStar>(si, GridHeuristic::Manhattan, name);
     if (name == "astar-euclidean") return std::make_shared<GridAStar>(si, GridHeuristic::Euclidean, name);
