@@ -199,9 +199,12 @@ struct PairResult
     std::vector<std::string> outcome;
 };
 
-/// Random start / goal pairs on free road cells at least 1.5 m from obstacles, 80 - 300 m apart.
+/// Random start / goal pairs, 80 - 300 m apart, on free cells at least max(1.5 m, 1.5 x the
+/// vehicle's width + 0.3 m) from obstacles (road centres for the car), at a heading where the
+/// vehicle fits.
 std::vector<std::pair<Pose2, Pose2>> randomPairs(const GridSetup &s, int n, unsigned long long seed)
 {
+    const double minDist = std::max(1.5, 1.5 * s.checker->vehicle().width + 0.3);
     std::mt19937_64 rng(seed);
     const OccupancyGrid &g = *s.grid;
     std::uniform_int_distribution<int> col(0, g.width() - 1), row(0, g.height() - 1);
@@ -209,13 +212,16 @@ std::vector<std::pair<Pose2, Pose2>> randomPairs(const GridSetup &s, int n, unsi
         for (int k = 0; k < 200000; ++k)
         {
             const int c = col(rng), r = row(rng);
-            if (g.isBlocked(c, r) || s.field->cellDistance(c, r) < 1.5) continue;
+            if (g.isBlocked(c, r) || s.field->cellDistance(c, r) < minDist) continue;
             for (int a = 0; a < 8; ++a)
-                if (s.checker->isValid(g.cellCenterX(c), g.cellCenterY(r), GridSE2StateSpace::wrapYaw(a * M_PI / 4)))
+            {
+                const double yaw = GridSE2StateSpace::wrapYaw(a * M_PI / 4);
+                if (s.checker->isValid(g.cellCenterX(c), g.cellCenterY(r), yaw))
                 {
-                    p = {g.cellCenterX(c), g.cellCenterY(r), 0.0};
+                    p = {g.cellCenterX(c), g.cellCenterY(r), yaw};
                     return true;
                 }
+            }
         }
         return false;
     };
