@@ -411,7 +411,40 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         const double margin = 0.1 + st.v * prm.dt;
         vCmd = std::min(vCmd, std::sqrt(2.0 * veh.deceleration * std::max(free - margin, 0.0)));
 
-        const VehicleState next = stepBicycle(st, veh, steerCmd, vCmd, prm.dt);
+        // safety filter: a car's body swings when it steers (the rear overhang moves the other
+        // way), so the commands are rolled out for a short horizon and softened until the
+        // rollout stays free; if nothing does, the vehicle stops (and may end as stuck)
+        double steerUse = steerCmd, vUse = 0.0;
+        {
+            const double candidates[][2] = {{1.0, 1.0}, {0.5, 1.0}, {0.0, 1.0}, {1.0, 0.5}, {0.5, 0.5}, {0.0, 0.5}, {-0.5, 0.5}};
+            const int horizon = std::max(2, int(std::ceil(0.6 / prm.dt)));
+            for (const auto &cand : candidates)
+            {
+                VehicleState r = st;
+                bool ok = true;
+                for (int k = 1; k <= horizon && ok; ++k)
+                {
+                    r = stepBicycle(r, veh, cand[0] * steerCmd, cand[1] * vCmd, prm.dt);
+                    if (k % (horizon / 2) != 0) continue;
+                    ok = checker.isValid(r.x, r.y, r.yaw);
+                    for (const MovingObstacle &m : scenario.obstacles)
+                    {
+                        if (!ok) break;
+                        double mx, my;
+                        m.positionAt(t + k * prm.dt, mx, my);
+                        ok = m.distanceFrom(r.x + veh.centreOffset() * std::cos(r.yaw), r.y + veh.centreOffset() * std::sin(r.yaw),
+                                            t + k * prm.dt) > veh.circumscribedRadius();
+                    }
+                }
+                if (ok)
+                {
+                    steerUse = cand[0] * steerCmd;
+                    vUse = cand[1] * vCmd;
+                    break;
+                }
+            }
+        }
+        const VehicleState next = stepBicycle(st, veh, steerUse, vUse, prm.dt);
         res.distanceDriven += std::hypot(next.x - st.x, next.y - st.y);
         st = next;
         t += prm.dt;
