@@ -233,6 +233,12 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         }
     }
     const VelocityProfile profile = velocityProfile(path, veh);
+    std::vector<double> pathClear;  // d_O - half width at the path's vertices (min with the previous one)
+    for (std::size_t i = 0; i < path.size(); ++i)
+    {
+        const double c = field.distance(path[i].x, path[i].y) - veh.width / 2;
+        pathClear.push_back(i ? std::min(c, field.distance(path[i - 1].x, path[i - 1].y) - veh.width / 2) : c);
+    }
     const double halfWidth = veh.width / 2;
     const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, field.resolution());
     const double tmax = prm.timeLimit > 0 ? prm.timeLimit : 60.0 + 5.0 * total / veh.maxSpeed;
@@ -242,8 +248,9 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
     std::vector<std::pair<double, double>> virtualObstacles;
     const double frontOffset = std::max(veh.length - veh.rearOverhang, 0.0);
     const double brakeRange = veh.maxSpeed * veh.maxSpeed / (2.0 * veh.deceleration) + prm.rho0 + 1.0;
-    // free distance ahead of the front bumper in a lane of the body's width
-    auto freeAhead = [&](const VehicleState &q, double time) {
+    // free distance ahead of the front bumper in a lane of the body's width: of the map and
+    // the virtual obstacles (static), and of the moving obstacles
+    auto freeAhead = [&](const VehicleState &q, double time, double &freeMoving) {
         const double cx = std::cos(q.yaw), cy = std::sin(q.yaw);
         const double fx0 = q.x + frontOffset * cx, fy0 = q.y + frontOffset * cy;
         double free = brakeRange;
@@ -257,17 +264,18 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
             }
             sr += std::max(d - halfWidth, 0.5 * field.resolution());
         }
-        auto lane = [&](double ox, double oy, double r) {
+        auto lane = [&](double ox, double oy, double r, double &f) {
             const double along = (ox - fx0) * cx + (oy - fy0) * cy, lateral = std::abs(-(ox - fx0) * cy + (oy - fy0) * cx);
-            if (along > -r && lateral < halfWidth + r) free = std::min(free, std::max(along - r, 0.0));
+            if (along > -r && lateral < halfWidth + r) f = std::min(f, std::max(along - r, 0.0));
         };
+        for (const auto &vo : virtualObstacles) lane(vo.first, vo.second, 0.5, free);
+        freeMoving = brakeRange;
         for (const MovingObstacle &m : scenario.obstacles)
         {
             double mx, my;
             m.positionAt(time, mx, my);
-            lane(mx, my, m.shape == MovingObstacle::Shape::Disc ? m.radius : 0.5 * std::hypot(m.sizeX, m.sizeY));
+            lane(mx, my, m.shape == MovingObstacle::Shape::Disc ? m.radius : 0.5 * std::hypot(m.sizeX, m.sizeY), freeMoving);
         }
-        for (const auto &vo : virtualObstacles) lane(vo.first, vo.second, 0.5);
         return free;
     };
     VehicleState st;
@@ -358,34 +366,38 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
             fx *= fmax / fa;
             fy *= fmax / fa;
         }
-        // repulsion at the body's centre and front
+        // repulsion at the body's centre and front; the map's influence distance shrinks to what
+        // the path itself leaves (its clearance here + 0.3 m): where the planner threads a
+        // narrow passage, full-range repulsion would only push the vehicle off the path into a
+        // local minimum (paper C's known weakness in narrow passages)
+        const double rho0Static = std::clamp(pathClear[std::min(seg + 1, path.size() - 1)] + 0.3, 0.3, prm.rho0);
         double rhoMin = kInf;
         const double off = veh.centreOffset();
         const double frontOff = veh.length - veh.rearOverhang - halfWidth;
         for (double o : {off, std::max(off, frontOff)})
         {
             const double px = st.x + o * std::cos(st.yaw), py = st.y + o * std::sin(st.yaw);
-            auto push = [&](double rho, double gx, double gy) {
+            auto push = [&](double rho, double gx, double gy, double r0) {
                 rho = std::max(rho, 0.05);
                 rhoMin = std::min(rhoMin, rho);
-                if (rho >= prm.rho0) return;
+                if (rho >= r0) return;
                 const double gn = std::hypot(gx, gy);
                 if (gn < 1e-9) return;
-                const double mag = prm.eta * (1.0 / rho - 1.0 / prm.rho0) / (rho * rho);
+                const double mag = prm.eta * (1.0 / rho - 1.0 / r0) / (rho * rho);
                 fx += mag * gx / gn;
                 fy += mag * gy / gn;
             };
             double gx, gy;
             field.gradient(px, py, gx, gy);
-            push(field.distance(px, py) - halfWidth, gx, gy);
+            push(field.distance(px, py) - halfWidth, gx, gy, rho0Static);
             for (const MovingObstacle &m : scenario.obstacles)
             {
                 double mx, my;
                 m.positionAt(t, mx, my);
-                push(m.distanceFrom(px, py, t) - halfWidth, px - mx, py - my);
+                push(m.distanceFrom(px, py, t) - halfWidth, px - mx, py - my, prm.rho0);
             }
             for (const auto &vo : virtualObstacles)
-                push(std::hypot(px - vo.first, py - vo.second) - 0.5 - halfWidth, px - vo.first, py - vo.second);
+                push(std::hypot(px - vo.first, py - vo.second) - 0.5 - halfWidth, px - vo.first, py - vo.second, prm.rho0);
         }
         const double desired = std::atan2(fy, fx);
         const double err = wrapAngle(desired - st.yaw);
@@ -405,11 +417,16 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         const double tanSteer = std::abs(std::tan(std::clamp(steerCmd, -phi, phi)));
         if (tanSteer > 1e-6 && aLat > 0) vCmd = std::min(vCmd, std::sqrt(aLat * veh.wheelbase / tanSteer));
         vCmd = std::min(vCmd, std::max(std::sqrt(2.0 * veh.deceleration * toGoal), floorV));
-        // never faster than lets the vehicle stop before what is straight ahead in its lane
-        // (map, moving and virtual obstacles): v <= sqrt(2 d (free - margin))
-        const double free = freeAhead(st, t);
+        // never faster than lets the vehicle stop before what is straight ahead in its lane,
+        // v <= sqrt(2 d (free - margin)): for moving obstacles down to a standstill (yield);
+        // for the map and virtual obstacles down to a crawl, since the vehicle may be turning
+        // away (the rollout below keeps the body free)
+        double freeMoving;
+        const double freeStatic = freeAhead(st, t, freeMoving);
         const double margin = 0.1 + st.v * prm.dt;
-        vCmd = std::min(vCmd, std::sqrt(2.0 * veh.deceleration * std::max(free - margin, 0.0)));
+        const double crawl = std::min(0.2 * veh.maxSpeed, 0.5);
+        vCmd = std::min(vCmd, std::max(std::sqrt(2.0 * veh.deceleration * std::max(freeStatic - margin, 0.0)), crawl));
+        vCmd = std::min(vCmd, std::sqrt(2.0 * veh.deceleration * std::max(freeMoving - margin, 0.0)));
 
         // safety filter: a car's body swings when it steers (the rear overhang moves the other
         // way), so the commands are rolled out for a short horizon and softened until the
