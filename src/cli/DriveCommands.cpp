@@ -369,7 +369,7 @@ int runPaperC(const PaperCOptions &o)
     nlohmann::json jsweep = nlohmann::json::array();
     for (double f : {-1.0, 0.0, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0})
     {
-        double tt = 0, tl = 0, tn = 0;
+        double tt = 0, tl = 0, tn = 0, baseTotal = 0;  // baseTotal: A* on the same pairs
         int ok = 0;
         for (std::size_t k = 0; k < pairs.size(); ++k)
         {
@@ -387,13 +387,11 @@ int runPaperC(const PaperCOptions &o)
             if (f < 0) base[k] = r.drivingTime;
             if (std::isnan(base[k])) continue;
             tt += r.drivingTime;
+            baseTotal += base[k];
             tl += q.metrics.length;
             tn += q.metrics.turns;
             ++ok;
         }
-        double baseTotal = 0;
-        for (double b : base)
-            if (!std::isnan(b)) baseTotal += b;
         md << "| " << (f < 0 ? std::string("A* Euclidean") : fmt(f, 2)) << " | " << fmt(tt, 1) << " (" << ok << " pairs) | "
            << (f < 0 ? std::string("-") : fmt(pct(baseTotal, tt), 1) + " %") << " | " << fmt(tl, 0) << " | " << fmt(tn, 0) << " |\n";
         jsweep.push_back({{"factor", f}, {"total_time", tt}, {"pairs", ok}, {"total_length", tl}, {"total_turns", tn}});
