@@ -77,6 +77,7 @@ struct DriveOptions
     std::string pathCsv;       ///< drive this path (x,y[,yaw] CSV) instead of planning
     std::string scenario;      ///< moving obstacles (YAML)
     double dt{0.05};
+    double xi{1.0}, eta{0.6}, rho0{1.5};  ///< potential-field gains (FollowerParams)
     bool json{false};
     std::string png;
     std::string trajectoryCsv;

@@ -122,6 +122,8 @@ int runDrive(const DriveOptions &o)
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     const PlanOptions &p = o.plan;
     if (!(o.dt > 0) || o.dt > 1.0) throw InputError("--dt must be in (0, 1] s");
+    if (!(o.xi >= 0) || !(o.eta >= 0) || !(o.rho0 > 0) || !std::isfinite(o.xi + o.eta + o.rho0))
+        throw InputError("--xi and --eta must be >= 0 and --rho0 > 0 (finite)");
     auto grid = std::make_shared<OccupancyGrid>(loadMap(p.map));
     grid->setUnknownIsFree(p.unknownFree);
     const VehicleParams vehicle = loadVehicle(p.vehicle);
@@ -164,6 +166,9 @@ int runDrive(const DriveOptions &o)
     }
     FollowerParams fp;
     fp.dt = o.dt;
+    fp.xi = o.xi;
+    fp.eta = o.eta;
+    fp.rho0 = o.rho0;
     const DriveResult r = drivePath(path, *setup.checker, sc, fp);
     const nlohmann::json dj = driveJson(r);  // (items() of a temporary would dangle)
     for (const auto &kv : dj.items()) j[kv.key()] = kv.value();

@@ -97,6 +97,10 @@ int main(int argc, char **argv)
     cDrive->add_flag("--unknown-free", drive.plan.unknownFree, "Treat unknown cells as free");
     cDrive->add_option("--scenario", drive.scenario, "Moving obstacles (YAML: obstacles: [{shape, radius | size, waypoints, speed, start_time, loop}])");
     cDrive->add_option("--dt", drive.dt, "Simulation step, s")->capture_default_str();
+    cDrive->add_option("--xi", drive.xi, "Attractive gain of the potential field")->capture_default_str();
+    cDrive->add_option("--eta", drive.eta, "Repulsive gain of the potential field")->capture_default_str();
+    cDrive->add_option("--rho0", drive.rho0, "Influence distance of obstacles, m (beyond the body's half width)")
+        ->capture_default_str();
     cDrive->add_flag("--json", drive.json,
                      "Print one JSON object: outcome (reached | collided | stuck | timeout), reason, driving_time, path_length, "
                      "distance_driven, cross_track_mean, cross_track_max, min_clearance, recoveries, plan {...}");
