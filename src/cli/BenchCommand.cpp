@@ -1,5 +1,6 @@
 // gridcar bench PROBLEM.yaml: ompl::tools::Benchmark of our planners against OMPL's on one
 // problem file, then the SQLite database (ompl_benchmark_statistics) and the report.
+#include "CliUtil.h"
 #include "Commands.h"
 
 #include "gridcar/io/Render.h"
@@ -361,20 +362,13 @@ int runBench(const BenchOptions &o)
         if (!b.saveResultsToFile(log.c_str())) throw std::runtime_error("cannot write " + log);
         logs.push_back(log);
         // a picture of the query's surroundings for the report
-        double x0 = std::min(start.x, goal.x), x1 = std::max(start.x, goal.x);
-        double y0 = std::min(start.y, goal.y), y1 = std::max(start.y, goal.y);
+        WorldBox box;
+        box.add(start.x, start.y);
+        box.add(goal.x, goal.y);
         for (auto it = pathsJson.begin(); it != pathsJson.end(); ++it)
             if (it.key().rfind(expName + "|", 0) == 0)
-                for (const auto &pt : *it)
-                {
-                    x0 = std::min(x0, pt[0].get<double>()), x1 = std::max(x1, pt[0].get<double>());
-                    y0 = std::min(y0, pt[1].get<double>()), y1 = std::max(y1, pt[1].get<double>());
-                }
-        const double margin = 15.0;
-        const Cell tl = grid->worldToCell(x0 - margin, y1 + margin), br = grid->worldToCell(x1 + margin, y0 - margin);
-        const int c0 = std::clamp(tl.col, 0, grid->width() - 1), r0 = std::clamp(tl.row, 0, grid->height() - 1);
-        const int c1 = std::clamp(br.col, 0, grid->width() - 1), r1 = std::clamp(br.row, 0, grid->height() - 1);
-        const OccupancyGrid crop = grid->cropped(c0, r0, c1 - c0 + 1, r1 - r0 + 1);
+                for (const auto &pt : *it) box.add(pt[0].get<double>(), pt[1].get<double>());
+        const OccupancyGrid crop = cropAround(*grid, box, 15.0);
         MapCanvas canvas(crop, 1200);
         const std::string png = expName + tag + "-map.png";
         canvas.save((fs::path(o.outDir) / png).string());

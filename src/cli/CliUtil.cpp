@@ -126,4 +126,19 @@ void applyParams(ompl::base::Planner &planner, const std::vector<std::string> &p
         if (!ok) throw InputError("--param " + kv + ": value not accepted");
     }
 }
+OccupancyGrid cropAround(const OccupancyGrid &grid, const WorldBox &box, double margin)
+{
+    const Cell tl = grid.worldToCell(box.x0 - margin, box.y1 + margin), br = grid.worldToCell(box.x1 + margin, box.y0 - margin);
+    const int c0 = std::clamp(tl.col, 0, grid.width() - 1), r0 = std::clamp(tl.row, 0, grid.height() - 1);
+    const int c1 = std::clamp(br.col, 0, grid.width() - 1), r1 = std::clamp(br.row, 0, grid.height() - 1);
+    return grid.cropped(c0, r0, c1 - c0 + 1, r1 - r0 + 1);
+}
+
+std::string fixed(double v, int prec)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", prec, v);
+    return buf;
+}
+
 }  // namespace gridcar::cli

@@ -6,6 +6,7 @@
 
 #include <ompl/base/Planner.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,20 @@ std::string describe(const Pose2 &p);
 VehicleParams loadVehicle(const std::string &v);
 /// makePlanner() with InputError for unknown names.
 ompl::base::PlannerPtr plannerByName(const GridSetup &setup, const std::string &name);
+/// Bounding box of world points.
+struct WorldBox
+{
+    double x0{1e300}, x1{-1e300}, y0{1e300}, y1{-1e300};
+    void add(double x, double y)
+    {
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+};
+/// The part of @p grid covering @p box plus @p margin metres on every side, clipped to the map
+/// (for pictures of a query's surroundings).
+OccupancyGrid cropAround(const OccupancyGrid &grid, const WorldBox &box, double margin);
+/// @p v with @p prec decimals.
+std::string fixed(double v, int prec);
 /// --param NAME=VALUE settings; InputError listing the planner's parameters on an unknown name.
 void applyParams(ompl::base::Planner &planner, const std::vector<std::string> &params);
 }  // namespace gridcar::cli

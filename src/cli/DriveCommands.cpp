@@ -71,17 +71,10 @@ std::vector<Pose2> readPathCsv(const std::string &file)
 void drawDrive(const OccupancyGrid &grid, const std::vector<Pose2> &path, const DriveResult &r, const Scenario &sc,
                const std::string &png)
 {
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    auto grow = [&](double x, double y) {
-        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-    };
-    for (const Pose2 &p : path) grow(p.x, p.y);
-    for (const TrajectorySample &q : r.trajectory) grow(q.x, q.y);
-    const double m = 8.0;
-    const Cell tl = grid.worldToCell(x0 - m, y1 + m), br = grid.worldToCell(x1 + m, y0 - m);
-    const int c0 = std::clamp(tl.col, 0, grid.width() - 1), r0 = std::clamp(tl.row, 0, grid.height() - 1);
-    const int c1 = std::clamp(br.col, 0, grid.width() - 1), r1 = std::clamp(br.row, 0, grid.height() - 1);
-    const OccupancyGrid crop = grid.cropped(c0, r0, c1 - c0 + 1, r1 - r0 + 1);
+    WorldBox box;
+    for (const Pose2 &p : path) box.add(p.x, p.y);
+    for (const TrajectorySample &q : r.trajectory) box.add(q.x, q.y);
+    const OccupancyGrid crop = cropAround(grid, box, 8.0);
     MapCanvas canvas(crop, 1200);
     for (const MovingObstacle &o : sc.obstacles)
     {
@@ -242,12 +235,6 @@ std::vector<std::pair<Pose2, Pose2>> randomPairs(const GridSetup &s, int n, unsi
     return out;
 }
 
-std::string fmt(double v, int prec)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", prec, v);
-    return buf;
-}
 }  // namespace
 
 int runPaperC(const PaperCOptions &o)
@@ -346,20 +333,20 @@ int runPaperC(const PaperCOptions &o)
                 if (v.empty()) return std::string("-");
                 std::sort(v.begin(), v.end());
                 const double med = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-                return fmt(med, 1) + " % (" + fmt(v.front(), 1) + " .. " + fmt(v.back(), 1) + ")";
+                return fixed(med, 1) + " % (" + fixed(v.front(), 1) + " .. " + fixed(v.back(), 1) + ")";
             };
-            md << "| " << mc.key << " | " << vname << " | " << n << " | " << fmt(tot[0], 1) << " | " << fmt(tot[1], 1) << " | "
-               << (n ? fmt(pct(tot[0], tot[1]), 1) + " %" : "-") << " | " << fmt(tot[2], 1) << " | "
-               << (n ? fmt(pct(tot[0], tot[2]), 1) + " %" : "-") << " | " << summary(ch1) << " | " << summary(ch2) << " |\n";
+            md << "| " << mc.key << " | " << vname << " | " << n << " | " << fixed(tot[0], 1) << " | " << fixed(tot[1], 1) << " | "
+               << (n ? fixed(pct(tot[0], tot[1]), 1) + " %" : "-") << " | " << fixed(tot[2], 1) << " | "
+               << (n ? fixed(pct(tot[0], tot[2]), 1) + " %" : "-") << " | " << summary(ch1) << " | " << summary(ch2) << " |\n";
         }
     md << "\n### Per pair (simulated driving time s; length m; turns)\n\n"
           "| map | vehicle | pair | straight m | A* | corner (paper) | corner (physics) |\n|---|---|---|---|---|---|---|\n";
     for (const PairResult &pr : all)
     {
-        md << "| " << pr.map << " | " << pr.vehicle << " | " << pr.pair << " | " << fmt(pr.straight, 0);
+        md << "| " << pr.map << " | " << pr.vehicle << " | " << pr.pair << " | " << fixed(pr.straight, 0);
         for (int c = 0; c < 3; ++c)
-            md << " | " << (std::isnan(pr.simTime[c]) ? pr.outcome[c] : fmt(pr.simTime[c], 1) + " s; " + fmt(pr.length[c], 0) +
-                                                                             " m; " + fmt(pr.turnsV[c], 0));
+            md << " | " << (std::isnan(pr.simTime[c]) ? pr.outcome[c] : fixed(pr.simTime[c], 1) + " s; " + fixed(pr.length[c], 0) +
+                                                                             " m; " + fixed(pr.turnsV[c], 0));
         md << " |\n";
     }
 
@@ -397,8 +384,8 @@ int runPaperC(const PaperCOptions &o)
             tn += q.metrics.turns;
             ++ok;
         }
-        md << "| " << (f < 0 ? std::string("A* Euclidean") : fmt(f, 2)) << " | " << fmt(tt, 1) << " (" << ok << " pairs) | "
-           << (f < 0 ? std::string("-") : fmt(pct(baseTotal, tt), 1) + " %") << " | " << fmt(tl, 0) << " | " << fmt(tn, 0) << " |\n";
+        md << "| " << (f < 0 ? std::string("A* Euclidean") : fixed(f, 2)) << " | " << fixed(tt, 1) << " (" << ok << " pairs) | "
+           << (f < 0 ? std::string("-") : fixed(pct(baseTotal, tt), 1) + " %") << " | " << fixed(tl, 0) << " | " << fixed(tn, 0) << " |\n";
         jsweep.push_back({{"factor", f}, {"total_time", tt}, {"pairs", ok}, {"total_length", tl}, {"total_turns", tn}});
         std::fprintf(stderr, "[paper-c] sweep factor %g: %.1f s over %d pairs\n", f, tt, ok);
     }

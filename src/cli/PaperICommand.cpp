@@ -1,5 +1,6 @@
 // gridcar paper-i: paper I's section 4 (three query areas, the baselines and improved A*) on the
 // embedded campus and on the real Tsudanuma campus map (native and at paper I's 0.298 m/cell).
+#include "CliUtil.h"
 #include "Commands.h"
 #include "Query.h"
 
@@ -102,12 +103,6 @@ Pose2 snap(const GridSetup &s, double x, double y, const std::string &what)
                      std::to_string(y) + ")");
 }
 
-std::string fmt(double v, int prec)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", prec, v);
-    return buf;
-}
 }  // namespace
 
 int runPaperI(const PaperIOptions &o)
@@ -179,10 +174,10 @@ int runPaperI(const PaperIOptions &o)
                              q.seconds, q.metrics.length, (unsigned long long)q.expanded, elapsed);
                 const bool exact = q.status == ompl::base::PlannerStatus::EXACT_SOLUTION;
                 md << "| " << a.name << " | " << pr.label << " | " << (exact ? "exact" : q.status.asString()) << " | "
-                   << fmt(q.seconds, 3) << " | " << fmt(q.metrics.length, 1) << " | " << q.expanded << " | "
-                   << fmt(q.metrics.minPathDistance, 2) << " | " << fmt(q.metrics.minClearance, 2) << " | "
-                   << fmt(q.maxTurnDeg, 1) << " | " << (q.smoothed ? fmt(q.smoothingSeconds, 4) : std::string("-")) << " | "
-                   << q.metrics.turns << " | " << fmt(q.metrics.maxCurvature, 2) << " |\n";
+                   << fixed(q.seconds, 3) << " | " << fixed(q.metrics.length, 1) << " | " << q.expanded << " | "
+                   << fixed(q.metrics.minPathDistance, 2) << " | " << fixed(q.metrics.minClearance, 2) << " | "
+                   << fixed(q.maxTurnDeg, 1) << " | " << (q.smoothed ? fixed(q.smoothingSeconds, 4) : std::string("-")) << " | "
+                   << q.metrics.turns << " | " << fixed(q.metrics.maxCurvature, 2) << " |\n";
                 all.push_back({{"map", mc.key}, {"area", a.name}, {"planner", pr.label}, {"status", q.status.asString()},
                                {"time", q.seconds}, {"length", q.metrics.length}, {"expanded", q.expanded},
                                {"min_path_distance", q.metrics.minPathDistance}, {"min_clearance", q.metrics.minClearance},
@@ -193,19 +188,12 @@ int runPaperI(const PaperIOptions &o)
                 results.push_back({pr, q});
             }
             // picture: the area with every planner's path
-            double x0 = std::min(start.x, goal.x), x1 = std::max(start.x, goal.x);
-            double y0 = std::min(start.y, goal.y), y1 = std::max(start.y, goal.y);
+            WorldBox box;
+            box.add(start.x, start.y);
+            box.add(goal.x, goal.y);
             for (const auto &r : results)
-                for (const Pose2 &p : r.second.path)
-                {
-                    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
-                    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-                }
-            const double margin = 12.0, res = mc.grid->resolution();
-            const Cell tl = mc.grid->worldToCell(x0 - margin, y1 + margin);
-            const Cell br = mc.grid->worldToCell(x1 + margin, y0 - margin);
-            const OccupancyGrid crop = mc.grid->cropped(tl.col, tl.row, br.col - tl.col + 1, br.row - tl.row + 1);
-            (void)res;
+                for (const Pose2 &p : r.second.path) box.add(p.x, p.y);
+            const OccupancyGrid crop = cropAround(*mc.grid, box, 12.0);
             MapCanvas canvas(crop, 1000);
             for (const auto &r : results)
             {
