@@ -241,6 +241,8 @@ int runPaperC(const PaperCOptions &o)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     if (o.pairs < 1 || o.pairs > 1000) throw InputError("--pairs must be in 1..1000");
+    if (!(o.timeLimit > 0.0) || !std::isfinite(o.timeLimit) || o.timeLimit > 86400)
+        throw InputError("--time-limit must be a positive number of seconds (at most a day)");
     fs::create_directories(o.outDir);
     struct MapCase
     {

@@ -108,7 +108,8 @@ Pose2 snap(const GridSetup &s, double x, double y, const std::string &what)
 int runPaperI(const PaperIOptions &o)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-    if (!(o.timeLimit > 0.0) || !std::isfinite(o.timeLimit)) throw InputError("--time-limit must be positive");
+    if (!(o.timeLimit > 0.0) || !std::isfinite(o.timeLimit) || o.timeLimit > 86400)
+        throw InputError("--time-limit must be a positive number of seconds (at most a day)");
     fs::create_directories(o.outDir);
     const VehicleParams vehicle = VehicleParams::preset("paper-i");
     std::vector<MapCase> cases;
