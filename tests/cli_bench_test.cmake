@@ -62,3 +62,11 @@ run_gridcar(0 bench "${WORK}/p4.yaml" --out "${WORK}/bad" --shared "${WORK}/no-s
 expect_in("${ERR}" "skipped")
 run_gridcar(2 bench "${SMOKE}" --out "${WORK}/bad" --shard 3/2)
 expect_in("${ERR}" "--shard must be K/N")
+
+# ${shared} is the --shared folder relative to the working directory, not to the problem file
+file(MAKE_DIRECTORY "${WORK}/sh/maps")
+file(WRITE "${WORK}/sh/maps/tiny.map" "type octile\nheight 4\nwidth 6\nmap\n......\n......\n......\n......\n")
+file(WRITE "${WORK}/probs/p5.yaml" "map: \${shared}/maps/tiny.map\nvehicle: point\nruns: 1\ntime_limit: 0.2\nqueries: [ {start_cell: [0, 0], goal_cell: [5, 3]} ]\nplanners: [dijkstra]\n")
+file(RELATIVE_PATH rel "${CMAKE_CURRENT_BINARY_DIR}" "${WORK}/sh")
+run_gridcar(0 bench "${WORK}/probs/p5.yaml" --out "${WORK}/p5" --shared "${rel}" --no-database)
+expect_in("${ERR}" "1 logs written")

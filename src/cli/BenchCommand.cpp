@@ -95,7 +95,8 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
         bool shared = false;
         if (auto pos = p.map.find(tag); pos != std::string::npos)
         {
-            p.map.replace(pos, tag.size(), sharedDir);
+            // --shared is relative to the working directory, not to the problem file
+            p.map.replace(pos, tag.size(), fs::absolute(sharedDir).lexically_normal().string());
             shared = true;
         }
         if (p.map != "embedded")
