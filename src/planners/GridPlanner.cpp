@@ -318,7 +318,12 @@ struct CellExpander
         }
     }
     double heuristic(std::uint32_t s) const { return heuristicAt(int(s % std::uint32_t(W)), int(s / std::uint32_t(W))); }
-    bool isGoal(std::uint32_t s) const { return o.goalTest(int(s % std::uint32_t(W)), int(s / std::uint32_t(W)), -1); }
+    bool isGoal(std::uint32_t s) const
+    {
+        // a goal state is one cell: compare indices (no division on the hot path)
+        if (goalKnown) return s == std::uint32_t(goalRow * W + goalCol);
+        return o.goalTest(int(s % std::uint32_t(W)), int(s / std::uint32_t(W)), -1);
+    }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit) const
     {
@@ -327,7 +332,7 @@ struct CellExpander
             if (o.move(c, r, d))
             {
                 const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
-                emit(std::uint32_t(nr * W + nc), (d & 1) ? diag : straight, heuristicAt(nc, nr));
+                emit(std::uint32_t(nr * W + nc), (d & 1) ? diag : straight, [this, nc, nr] { return heuristicAt(nc, nr); });
             }
     }
 };

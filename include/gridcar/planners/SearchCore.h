@@ -243,9 +243,10 @@ private:
  * - `double heuristic(uint32_t s) const` (admissible for an optimal search; 0 gives Dijkstra),
  * - `bool isGoal(uint32_t s)` (tested when a state is expanded, so any goal region works),
  * - `template <class Emit> void successors(uint32_t s, Emit &&emit)` calling
- *   `emit(uint32_t next, double stepCost, double hNext)` for every valid successor, with
- *   hNext = heuristic(next) (the expander knows the successor's coordinates, so it computes h
- *   without decoding the state index again).
+ *   `emit(uint32_t next, double stepCost, hNext)` for every valid successor, with hNext =
+ *   heuristic(next) or a callable returning it (then evaluated only when the successor's g
+ *   improves; the expander knows the successor's coordinates, so it computes h without
+ *   decoding the state index again).
  *
  * An expander may also define `double priority(double g, double h, uint32_t s) const`: the
  * open list is then ordered by it instead of f = g + h (paper I's f = g' + h (1 + o) + s); the
@@ -318,12 +319,17 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
             res.outcome = SearchOutcome::Cancelled;
             return res;
         }
-        ex.successors(e.s, [&](std::uint32_t n, double cost, double hn) {
+        ex.successors(e.s, [&](std::uint32_t n, double cost, auto &&hn) {
             const double ng = g + cost;
             if (ng < space.g(n) && (reopen || !space.closed(n)))
             {
                 space.open(n, ng, e.s);
-                heap.push({priorityOf(ng, hn, n), float(ng), n});
+                double h;
+                if constexpr (std::is_invocable_v<decltype(hn)>)
+                    h = hn();  // evaluated only for successors whose g improved
+                else
+                    h = hn;
+                heap.push({priorityOf(ng, h, n), float(ng), n});
                 ++res.generated;
             }
         });
