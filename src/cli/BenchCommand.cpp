@@ -302,7 +302,7 @@ int runBench(const BenchOptions &o)
             const PlannerSpec spec = p.planners[k];
             b.addPlannerAllocator([spec, startYaw, &p](const ompl::base::SpaceInformationPtr &si) {
                 ompl::base::PlannerPtr pl = makePlanner(si, spec.name);
-                if (!startYaw && pl->params().hasParam("free_start_heading")) pl->params().setParam("free_start_heading", "1");
+                if (!startYaw) freeStartHeading(*pl);
                 for (const auto &kv : spec.params)
                 {
                     bool ok = false;

@@ -126,6 +126,11 @@ void applyParams(ompl::base::Planner &planner, const std::vector<std::string> &p
         if (!ok) throw InputError("--param " + kv + ": value not accepted");
     }
 }
+void freeStartHeading(ompl::base::Planner &planner)
+{
+    if (planner.params().hasParam("free_start_heading")) planner.params().setParam("free_start_heading", "1");
+}
+
 OccupancyGrid cropAround(const OccupancyGrid &grid, const WorldBox &box, double margin)
 {
     const Cell tl = grid.worldToCell(box.x0 - margin, box.y1 + margin), br = grid.worldToCell(box.x1 + margin, box.y0 - margin);

@@ -37,6 +37,9 @@ struct WorldBox
 OccupancyGrid cropAround(const OccupancyGrid &grid, const WorldBox &box, double margin);
 /// @p v with @p prec decimals.
 std::string fixed(double v, int prec);
+/// A start given without a yaw: grid planners then choose their first heading freely
+/// (`free_start_heading`); OMPL's planners have no such parameter and start at yaw 0.
+void freeStartHeading(ompl::base::Planner &planner);
 /// --param NAME=VALUE settings; InputError listing the planner's parameters on an unknown name.
 void applyParams(ompl::base::Planner &planner, const std::vector<std::string> &params);
 }  // namespace gridcar::cli

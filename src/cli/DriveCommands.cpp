@@ -141,7 +141,7 @@ int runDrive(const DriveOptions &o)
         if (!setup.checker->isValid(start)) throw InputError("start " + describe(start) + " is off the map or in collision");
         if (!setup.checker->isValid(goal)) throw InputError("goal " + describe(goal) + " is off the map or in collision");
         const ompl::base::PlannerPtr planner = plannerByName(setup, p.planner);
-        if (!startYaw && planner->params().hasParam("free_start_heading")) planner->params().setParam("free_start_heading", "1");
+        if (!startYaw) freeStartHeading(*planner);
         applyParams(*planner, p.params);
         const QueryResult q = runQuery(setup, planner, start, goal, p.timeLimit, p.smooth);
         j["plan"] = {{"planner", p.planner},         {"status", q.status.asString()}, {"cost", q.cost},
@@ -279,7 +279,7 @@ int runPaperC(const PaperCOptions &o)
                 for (std::size_t c = 0; c < configs.size(); ++c)
                 {
                     ompl::base::PlannerPtr pl = makePlanner(setup.ss->getSpaceInformation(), configs[c].first);
-                    pl->params().setParam("free_start_heading", "1");
+                    freeStartHeading(*pl);
                     applyParams(*pl, configs[c].second);
                     const QueryResult q = runQuery(setup, pl, pairs[k].first, pairs[k].second, o.timeLimit, false);
                     pr.planners.push_back(labels[c]);
@@ -368,7 +368,7 @@ int runPaperC(const PaperCOptions &o)
         for (std::size_t k = 0; k < pairs.size(); ++k)
         {
             ompl::base::PlannerPtr pl = makePlanner(setup.ss->getSpaceInformation(), f < 0 ? "astar-euclidean" : "corner-astar");
-            pl->params().setParam("free_start_heading", "1");
+            freeStartHeading(*pl);
             if (f >= 0)
                 applyParams(*pl, {"corner_weight_45=" + std::to_string(2.7 * f), "corner_weight_90=" + std::to_string(7.0 * f),
                                   "corner_weight_135=" + std::to_string(11.3 * f)});

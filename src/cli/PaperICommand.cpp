@@ -167,7 +167,7 @@ int runPaperI(const PaperIOptions &o)
             {
                 std::fprintf(stderr, "[paper-i] %s area %s: %-24s ", mc.key.c_str(), a.name.c_str(), pr.label.c_str());
                 ompl::base::PlannerPtr planner = makePlanner(setup.ss->getSpaceInformation(), pr.name);
-                planner->params().setParam("free_start_heading", "1");
+                freeStartHeading(*planner);
                 for (const auto &kv : pr.params) planner->params().setParam(kv.first, kv.second);
                 const QueryResult q = runQuery(setup, planner, start, goal, o.timeLimit, false);
                 const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -43,7 +43,7 @@ int runPlan(const PlanOptions &o)
     const Pose2 goal = parsePose(o.goal, o.goalCell, "goal", *grid, goalYaw);
     GridSetup setup = makeGridSetup(grid, vehicle);
     const ompl::base::PlannerPtr planner = plannerByName(setup, o.planner);
-    if (!startYaw && planner->params().hasParam("free_start_heading")) planner->params().setParam("free_start_heading", "1");
+    if (!startYaw) freeStartHeading(*planner);
     applyParams(*planner, o.params);
 
     nlohmann::json j;
