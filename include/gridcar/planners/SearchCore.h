@@ -195,45 +195,119 @@ struct SearchResult
     std::uint64_t generated{0};
 };
 
-/// Open-list entry: f exact; g (as float) only breaks ties, the exact g is in the SearchSpace.
+/// Maps a double to an unsigned integer of the same order (negative numbers included).
+inline std::uint64_t orderedBits(double x)
+{
+    std::uint64_t u;
+    std::memcpy(&u, &x, sizeof u);
+    return (u >> 63) ? ~u : (u | (std::uint64_t(1) << 63));
+}
+/// Inverse of orderedBits(double).
+inline double fromOrderedBits(std::uint64_t u)
+{
+    u = (u >> 63) ? (u & ~(std::uint64_t(1) << 63)) : ~u;
+    double x;
+    std::memcpy(&x, &u, sizeof x);
+    return x;
+}
+/// Maps a float to an unsigned integer of the same order.
+inline std::uint32_t orderedBits(float x)
+{
+    std::uint32_t u;
+    std::memcpy(&u, &x, sizeof u);
+    return (u >> 31) ? ~u : (u | (std::uint32_t(1) << 31));
+}
+
+/**
+ * @brief Open-list entry: f exact; g (as float) only breaks ties, the exact g is in the
+ * SearchSpace. Stored as two integers whose lexicographic order is the open-list order (lower
+ * f, then higher g, then lower state index), so a heap comparison is two integer compares
+ * without branches on floating-point flags.
+ */
 struct OpenEntry
 {
-    double f;
-    float g;
-    std::uint32_t s;
+    std::uint64_t key;  ///< orderedBits(f)
+    std::uint64_t tie;  ///< (~orderedBits(float g)) << 32 | state
+    OpenEntry() = default;
+    OpenEntry(double f, float g, std::uint32_t s)
+      : key(orderedBits(f)), tie((std::uint64_t(~orderedBits(g)) << 32) | s)
+    {
+    }
+    double f() const { return fromOrderedBits(key); }
+    std::uint32_t s() const { return std::uint32_t(tie); }
 };
 
 /// True if @p a must come out of the open list before @p b: lower f, then higher g, then
 /// lower state index (deterministic).
 inline bool openBefore(const OpenEntry &a, const OpenEntry &b)
 {
-    if (a.f != b.f) return a.f < b.f;
-    if (a.g != b.g) return a.g > b.g;
-    return a.s < b.s;
+    return a.key < b.key || (a.key == b.key && a.tie < b.tie);
 }
 
 /// Binary min-heap of OpenEntry (std::push_heap / std::pop_heap). A 4-ary heap was tried and
 /// cost about 20 % more instructions per expansion on the Moving AI mazes.
-class OpenList
+class BinaryHeap
 {
 public:
     bool empty() const { return h_.empty(); }
+    std::size_t size() const { return h_.size(); }
+    const OpenEntry &top() const { return h_.front(); }
     void push(const OpenEntry &e)
     {
         h_.push_back(e);
-        std::push_heap(h_.begin(), h_.end(), after);
+        std::push_heap(h_.begin(), h_.end(), After());
     }
     OpenEntry pop()
     {
-        std::pop_heap(h_.begin(), h_.end(), after);
+        std::pop_heap(h_.begin(), h_.end(), After());
         const OpenEntry e = h_.back();
         h_.pop_back();
         return e;
     }
+    void clear() { h_.clear(); }
 
 private:
-    static bool after(const OpenEntry &a, const OpenEntry &b) { return openBefore(b, a); }
+    struct After
+    {
+        bool operator()(const OpenEntry &a, const OpenEntry &b) const { return openBefore(b, a); }
+    };
     std::vector<OpenEntry> h_;
+};
+
+/**
+ * @brief The open list: a binary heap plus a small second heap for entries whose f equals
+ * (within a few ulps) the f of the entry popped last.
+ *
+ * On grids most successors of an A* expansion lie on the same f plateau (with an octile
+ * heuristic every step towards the goal keeps f), and with ties broken towards higher g they
+ * are exactly the entries popped next. Keeping them in a heap of a few entries instead of the
+ * big one saves most of the big heap's O(log n) pops. pop() returns the lesser top of the two
+ * heaps under openBefore, so the order is exactly that of one heap: the split only decides
+ * where an entry waits.
+ */
+class OpenList
+{
+public:
+    bool empty() const { return main_.empty() && near_.empty(); }
+    void push(const OpenEntry &e)
+    {
+        if (e.key >= floor_ && e.key - floor_ <= kNearUlps)
+            near_.push(e);
+        else
+            main_.push(e);
+    }
+    OpenEntry pop()
+    {
+        const bool fromNear = !near_.empty() && (main_.empty() || openBefore(near_.top(), main_.top()));
+        const OpenEntry e = fromNear ? near_.pop() : main_.pop();
+        floor_ = e.key;
+        return e;
+    }
+
+private:
+    static constexpr std::uint64_t kNearUlps = 64;
+    BinaryHeap main_, near_;
+    std::uint64_t floor_{0};
 };
 
 /**
@@ -257,7 +331,7 @@ private:
  *
  * Works on a SearchSpace (dense arrays) or a HashSearchSpace.
  *
- * Open list: a binary heap (OpenList) with lazy deletion (stale entries are skipped when popped).
+ * Open list: OpenList (binary heaps) with lazy deletion (stale entries are skipped when popped).
  * Tie-breaking is deterministic: lower f first, then higher g (deeper states, fewer
  * re-expansions on plateaus), then lower state index. @p cancelled is polled every 256
  * expansions. With a consistent heuristic each state is expanded at most once; with an
@@ -293,25 +367,26 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
         // Stale entries: h is fixed per state, so of a state's entries the one with the least g
         // has the least f and pops first; the state is closed then, and later (stale) entries of
         // it are skipped here. A reopened state (cheaper g found) pops its new entry first too.
-        if (space.closed(e.s)) continue;
-        const double g = space.g(e.s);
-        space.close(e.s);
+        const std::uint32_t es = e.s();
+        if (space.closed(es)) continue;
+        const double g = space.g(es);
+        space.close(es);
         ++res.expanded;
         if (progress) *progress = res.expanded;
         double h;
         if constexpr (custom)
-            h = ex.heuristic(e.s);
+            h = ex.heuristic(es);
         else
-            h = e.f - g;
+            h = e.f() - g;
         if (h < bestH)
         {
             bestH = h;
-            res.closest = e.s;
+            res.closest = es;
         }
-        if (ex.isGoal(e.s))
+        if (ex.isGoal(es))
         {
             res.outcome = SearchOutcome::Found;
-            res.goal = e.s;
+            res.goal = es;
             return res;
         }
         if ((res.expanded & 255u) == 0 && cancelled())
@@ -319,11 +394,11 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
             res.outcome = SearchOutcome::Cancelled;
             return res;
         }
-        ex.successors(e.s, [&](std::uint32_t n, double cost, auto &&hn) {
+        ex.successors(es, [&](std::uint32_t n, double cost, auto &&hn) {
             const double ng = g + cost;
             if (ng < space.g(n) && (reopen || !space.closed(n)))
             {
-                space.open(n, ng, e.s);
+                space.open(n, ng, es);
                 double h;
                 if constexpr (std::is_invocable_v<decltype(hn)>)
                     h = hn();  // evaluated only for successors whose g improved
