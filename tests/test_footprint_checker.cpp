@@ -157,6 +157,36 @@ TEST(VehicleParams, ReadsYamlFile)
     EXPECT_THROW(VehicleParams::fromNameOrFile(path), MapLoadError);
 }
 
+TEST(VehicleParams, ScaledKeepsTimingAndAnglesAndReadsFromYaml)
+{
+    const VehicleParams car = VehicleParams::preset("paper-c-car");
+    const VehicleParams s = car.scaled(0.02);
+    EXPECT_DOUBLE_EQ(s.maxSpeed, 0.6);  // paper C's robot speed
+    EXPECT_DOUBLE_EQ(s.cornerSpeed45, 0.2);
+    EXPECT_DOUBLE_EQ(s.acceleration, 0.06);  // 0 -> v_max still takes 10 s
+    EXPECT_DOUBLE_EQ(s.length, 0.09);
+    EXPECT_DOUBLE_EQ(s.maxSteerDeg, car.maxSteerDeg);
+    EXPECT_DOUBLE_EQ(s.friction, car.friction);
+    EXPECT_NEAR(s.minTurningRadius(), 0.02 * car.minTurningRadius(), 1e-12);
+    EXPECT_NO_THROW(s.validate());
+    EXPECT_THROW(car.scaled(0.0), std::invalid_argument);
+    EXPECT_THROW(car.scaled(std::nan("")), std::invalid_argument);
+
+    const std::string path = test::tmpDir() + "/veh_scaled.yaml";
+    {
+        std::ofstream f(path);
+        f << "preset: paper-c-car\nscale: 0.02\nmax_speed: 40\n";  // scale applies last
+    }
+    const VehicleParams y = VehicleParams::fromNameOrFile(path);
+    EXPECT_DOUBLE_EQ(y.maxSpeed, 0.8);
+    EXPECT_DOUBLE_EQ(y.wheelbase, 0.054);
+    {
+        std::ofstream f(path);
+        f << "preset: paper-c-car\nscale: -1\n";
+    }
+    EXPECT_THROW(VehicleParams::fromNameOrFile(path), MapLoadError);
+}
+
 TEST(FootprintChecker, NeverCallsACollidingPoseFreeOnRandomMaps)
 {
     int disagreements = 0, ambiguous = 0, collisions = 0;

@@ -345,6 +345,30 @@ TEST(CornerAStar, PhysicsWeightsFollowTheBrakingModel)
     EXPECT_LT(w.w90, w.w135);
 }
 
+// Paper C derives its weights from the full-size car and then scales "all values" to its robot
+// (30 -> 0.6 m/s, 10 -> 0.2 m/s corners: k = 1/50). The physics weights are distances, so they
+// scale by k: the car's 133 / 192 m become 2.67 / 3.84 m, the paper's 2.7 / 7 m in order of
+// magnitude (45 degrees to 1 %, 90 degrees a factor 1.8 below).
+TEST(CornerAStar, PhysicsWeightsOfThePapersCarScaledToItsRobotAreOfThePapersOrder)
+{
+    const VehicleParams car = VehicleParams::preset("paper-c-car");
+    const double k = 0.6 / 30.0;
+    const CornerWeights full = CornerAStar::physicsWeights(car);
+    const CornerWeights w = CornerAStar::physicsWeights(car.scaled(k));
+    EXPECT_NEAR(w.w45, k * full.w45, 1e-12);
+    EXPECT_NEAR(w.w90, k * full.w90, 1e-12);
+    EXPECT_NEAR(w.w135, k * full.w135, 1e-12);
+    const CornerWeights paper;
+    EXPECT_NEAR(w.w45 / paper.w45, 1.0, 0.02);
+    EXPECT_GT(w.w90 / paper.w90, 0.5);
+    EXPECT_LT(w.w90 / paper.w90, 1.0);
+    const CornerSpeeds vc = CornerAStar::cornerSpeeds(car.scaled(k));
+    EXPECT_NEAR(vc.v45, 0.2, 1e-12);  // the robot's corner speed in the paper
+    // the paper's "the distance lost is about 2/3 (45 deg) and 4/5 (90 deg)" is 1 - v_c / v_max
+    EXPECT_NEAR(1.0 - vc.v45 / 0.6, 2.0 / 3.0, 1e-12);
+    EXPECT_NEAR(1.0 - vc.v90 / 0.6, 4.0 / 5.0, 1e-12);
+}
+
 TEST(CornerAStar, NoReversalAndStartHeadingCounts)
 {
     // corridor 1 cell high: start facing east, goal to the west: needs a reversal -> impossible

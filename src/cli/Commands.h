@@ -42,6 +42,16 @@ struct DemoOptions
 };
 int runDemo(const DemoOptions &o);
 
+struct VehicleOptions
+{
+    std::string vehicle{"paper-i"};
+    double scale{1.0};
+    bool json{false};
+};
+/// Prints a vehicle's parameters, what follows from them (K_max, R_min, corner speeds) and the
+/// corner A* weights (paper and physics).
+int runVehicle(const VehicleOptions &o);
+
 }  // namespace gridcar::cli
 
 namespace gridcar::cli

@@ -47,6 +47,20 @@ int main(int argc, char **argv)
     cDemo->add_option("--vehicle", demo.vehicle, "Vehicle preset (paper-i, paper-c-car, paper-c-robot, point) or YAML file")
         ->capture_default_str();
 
+    VehicleOptions veh;
+    auto *cVeh = app.add_subcommand(
+        "vehicle", "Print a vehicle's parameters, its K_max, R_min and corner speeds, and the corner-astar weights "
+                   "(paper defaults and weights=physics) it implies");
+    cVeh->add_option("--vehicle", veh.vehicle, "Vehicle preset (paper-i, paper-c-car, paper-c-robot, point) or YAML file")
+        ->capture_default_str();
+    cVeh->add_option("--scale", veh.scale,
+                     "Scale the vehicle by K with the same timing: lengths, speeds and accelerations x K (paper C's "
+                     "robot is its car at K = 0.6 / 30 = 0.02)")
+        ->capture_default_str();
+    cVeh->add_flag("--json", veh.json,
+                   "Print one JSON object: the fields, max_curvature, min_turning_radius, corner_speeds, "
+                   "physics_weights and paper_weights ([45, 90, 135 deg])");
+
     PlanOptions plan;
     auto *cPlan = app.add_subcommand("plan", "Plan one path on a map with a grid planner or an OMPL planner");
     cPlan->add_option("--map", plan.map, "Map file")->required();
@@ -179,6 +193,7 @@ int main(int argc, char **argv)
         if (*cInfo) return runInfo(info);
         if (*cGen) return runGenmap(gen);
         if (*cDemo) return runDemo(demo);
+        if (*cVeh) return runVehicle(veh);
         if (*cPlan) return runPlan(plan);
         if (*cScen) return runScen(scen);
         if (*cPaper) return runPaperI(paper);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include <yaml-cpp/yaml.h>
@@ -132,6 +133,22 @@ VehicleParams VehicleParams::preset(const std::string &name)
     return v;
 }
 
+VehicleParams VehicleParams::scaled(double k) const
+{
+    if (!std::isfinite(k) || k <= 0.0)
+        throw std::invalid_argument("vehicle scale must be positive and finite, got " + std::to_string(k));
+    VehicleParams v = *this;
+    for (double *len : {&v.length, &v.width, &v.wheelbase, &v.rearOverhang})
+        *len *= k;
+    for (double *rate : {&v.maxSpeed, &v.acceleration, &v.deceleration, &v.maxLateralAccel, &v.cornerSpeed45,
+                         &v.cornerSpeed90, &v.cornerSpeed135})
+        *rate *= k;
+    std::ostringstream name;
+    name << this->name << " x " << k;
+    v.name = name.str();
+    return v;
+}
+
 VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
 {
     for (const auto &n : presetNames())
@@ -152,6 +169,7 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
     VehicleParams v;
     if (root["preset"]) v = preset(root["preset"].as<std::string>());
     v.name = s;
+    double scale = 1.0;
     struct Field
     {
         const char *key;
@@ -175,6 +193,19 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
         const std::string key = kv.first.as<std::string>();
         if (key == "preset" || key == "name") continue;
         bool known = false;
+        if (key == "scale")
+        {
+            known = true;
+            try
+            {
+                scale = kv.second.as<double>();
+            }
+            catch (const YAML::Exception &)
+            {
+                throw MapLoadError(s, "field 'scale' must be a number");
+            }
+            if (!std::isfinite(scale) || scale <= 0.0) throw MapLoadError(s, "field 'scale' must be positive and finite");
+        }
         for (auto &f : fields)
             if (key == f.key)
             {
@@ -189,6 +220,11 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
                 }
             }
         if (!known) throw MapLoadError(s, "unknown vehicle field '" + key + "'");
+    }
+    if (scale != 1.0)
+    {
+        v = v.scaled(scale);
+        v.name = s;
     }
     try
     {

@@ -439,20 +439,31 @@ void CornerAStar::setWeightMode(const std::string &mode)
     setup_ = false;
 }
 
-CornerWeights CornerAStar::physicsWeights(const VehicleParams &v)
+CornerSpeeds CornerAStar::cornerSpeeds(const VehicleParams &v)
 {
     const double V = v.maxSpeed;
     const double alat = std::min(v.friction * 9.81, v.maxLateralAccel);
-    auto cornerSpeed = [&](double thetaDeg, double given) {
+    auto speed = [&](double thetaDeg, double given) {
         if (given > 0.0) return std::min(V, given);
         const double r = std::max(v.minTurningRadius(), 1e-3) / std::tan(thetaDeg * M_PI / 360.0);
         return std::min(V, std::sqrt(alat * r));
     };
+    CornerSpeeds c;
+    c.v45 = speed(45.0, v.cornerSpeed45);
+    c.v90 = speed(90.0, v.cornerSpeed90);
+    c.v135 = speed(135.0, v.cornerSpeed135);
+    return c;
+}
+
+CornerWeights CornerAStar::physicsWeights(const VehicleParams &v)
+{
+    const double V = v.maxSpeed;
     auto lost = [&](double vc) { return 0.5 * (V - vc) * (V - vc) * (1.0 / v.acceleration + 1.0 / v.deceleration); };
+    const CornerSpeeds vc = cornerSpeeds(v);
     CornerWeights w;
-    w.w45 = lost(cornerSpeed(45.0, v.cornerSpeed45));
-    w.w90 = lost(cornerSpeed(90.0, v.cornerSpeed90));
-    w.w135 = lost(cornerSpeed(135.0, v.cornerSpeed135));
+    w.w45 = lost(vc.v45);
+    w.w90 = lost(vc.v90);
+    w.w135 = lost(vc.v135);
     return w;
 }
 

@@ -50,10 +50,24 @@ struct VehicleParams
     /// Throws std::invalid_argument naming the first field that is negative, NaN or inconsistent.
     void validate() const;
 
+    /**
+     * @brief The same vehicle at scale @p k with the same timing: lengths, speeds and
+     * accelerations (longitudinal and lateral) times k; angles and friction unchanged.
+     *
+     * Paper C drives a robot scaled down from its full-size car (30 m/s -> 0.6 m/s, 10 m/s
+     * corners -> 0.2 m/s: k = 1/50). Distances derived from the dynamics scale by k too, e.g.
+     * corner A*'s physics weights (CornerAStar::physicsWeights); the friction limit mu g does
+     * not scale (gravity does not), so a cornering speed limited by friction rather than by
+     * maxLateralAccel scales by sqrt(k) only. Throws std::invalid_argument unless k is finite
+     * and positive.
+     */
+    VehicleParams scaled(double k) const;
+
     /// Named presets: paper-i, paper-c-car, paper-c-robot, point.
     static VehicleParams preset(const std::string &name);
     static std::vector<std::string> presetNames();
-    /// A preset name, or a YAML file with the same field names (snake_case, see docs).
+    /// A preset name, or a YAML file with the same field names (snake_case, see docs), an
+    /// optional `preset:` to start from and an optional `scale:` applied last (scaled()).
     /// Throws std::invalid_argument (unknown preset) or MapLoadError (bad file).
     static VehicleParams fromNameOrFile(const std::string &nameOrPath);
 };

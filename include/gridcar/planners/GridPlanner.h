@@ -203,6 +203,12 @@ struct CornerWeights
     double w135{11.3}; ///< our choice (see CornerAStar)
 };
 
+/// Speeds (m/s) at which a vehicle takes 45-, 90- and 135-degree grid corners.
+struct CornerSpeeds
+{
+    double v45{0.0}, v90{0.0}, v135{0.0};
+};
+
 /**
  * @brief Corner-weighted A* (paper C): state = (cell, arrival direction); step cost = step
  * length + corner weight of the heading change (0 / 45 / 90 / 135 degrees). A 180-degree
@@ -232,8 +238,13 @@ public:
 
     void setup() override;
     const CornerWeights &weights() const { return weights_; }
-    /// Weights derived from a vehicle (the `physics` mode).
+    /// Weights derived from a vehicle (the `physics` mode): for each corner angle
+    /// (v_max - v_c)^2 / 2 (1/a + 1/d), v_max x the time lost braking to v_c and accelerating again.
     static CornerWeights physicsWeights(const VehicleParams &v);
+    /// The corner speeds v_c physicsWeights() uses (m/s; 45, 90, 135 degrees): the vehicle's
+    /// `corner_speed_*` if set, else sqrt(min(mu g, a_lat) r) with r = R_min / tan(theta / 2);
+    /// never above v_max.
+    static CornerSpeeds cornerSpeeds(const VehicleParams &v);
 
     double weight45() const { return userWeights_.w45; }
     double weight90() const { return userWeights_.w90; }
