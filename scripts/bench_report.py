@@ -4,6 +4,7 @@
 ompl_benchmark_statistics built from the OMPL .log files. Run by `gridcar bench`."""
 import argparse
 import json
+import sys
 import os
 import sqlite3
 import statistics
@@ -49,7 +50,8 @@ def cell(values, fmt):
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--db", required=True)
-    ap.add_argument("--paths", required=True, help="paths JSON written by gridcar bench")
+    ap.add_argument("--paths", required=True, nargs="+",
+                    help="paths JSON written by gridcar bench (several: the shards' files, merged)")
     ap.add_argument("--out", required=True)
     ap.add_argument("--title", default="benchmark")
     a = ap.parse_args()
@@ -57,9 +59,15 @@ def main():
     con = sqlite3.connect(a.db)
     cur = con.cursor()
     cols = {r[1] for r in cur.execute("PRAGMA table_info(runs)")}
-    with open(a.paths) as f:
-        paths = json.load(f)
-    maps = paths.get("_maps", {})
+    paths, maps = {}, {}
+    for name in a.paths:
+        try:
+            with open(name) as f:
+                part = json.load(f)
+        except (OSError, ValueError) as e:
+            sys.exit("bench_report.py: {}: {}".format(name, e))
+        maps.update(part.pop("_maps", {}))
+        paths.update(part)
 
     exps = cur.execute("SELECT id, name, timelimit, runcount FROM experiments ORDER BY id").fetchall()
     lines = ["# Benchmark report: {}".format(a.title), ""]

@@ -1,6 +1,6 @@
 # gridcar bench end to end on benchmarks/problems/smoke.yaml (every planner, embedded campus):
 # .log -> ompl_benchmark_statistics database with every planner's runs -> report.md and plots;
-# shards merged into one database; bad problem files exit 2 naming the file.
+# shards merged into one database and one report; bad problem files exit 2 naming the file.
 include("${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake")
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -46,6 +46,20 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "ompl_benchmark_statistics could not merge the shard logs")
 endif()
 count_planners("${WORK}/shards/merged.db" 18)
+# the report script merges the shards' paths files: the path picture then has every planner
+file(GLOB pathfiles "${WORK}/shards/*-paths.json")
+execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/scripts/bench_report.py" --db "${WORK}/shards/merged.db"
+  --paths ${pathfiles} --out "${WORK}/shards" --title merged RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "bench_report.py could not report the merged shards: ${err}")
+endif()
+file(READ "${WORK}/shards/report.md" report)
+foreach(p dijkstra bitstar rrtstar+smooth)
+  expect_in("${report}" "| ${p} |")
+endforeach()
+if(NOT EXISTS "${WORK}/shards/smoke-q1-paths.png")
+  message(FATAL_ERROR "no path picture from the merged shards")
+endif()
 
 # bad problem files
 file(WRITE "${WORK}/p1.yaml" "map: embedded\nqueries:\n  - {start: [506.749, 380.993], goal: [584.229, 347.319]}\nplanners: [dijkstra, rrt-sharp]\n")

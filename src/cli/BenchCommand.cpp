@@ -34,6 +34,9 @@
 #ifndef GRIDCAR_REPORT_SCRIPT
 #define GRIDCAR_REPORT_SCRIPT "scripts/bench_report.py"
 #endif
+#ifndef GRIDCAR_INSTALLED_REPORT_SCRIPT
+#define GRIDCAR_INSTALLED_REPORT_SCRIPT "../share/gridcar/bench_report.py"  // relative to the executable
+#endif
 
 namespace gridcar::cli
 {
@@ -225,6 +228,10 @@ int runBench(const BenchOptions &o)
     }
     if (o.timeLimit > 0) p.timeLimit = o.timeLimit;
     if (o.runs > 0) p.runs = o.runs;
+    const std::string script = o.reportScript.empty() ? defaultReportScript() : o.reportScript;
+    if (!o.noDatabase && shardN == 1 && !fs::is_regular_file(script))  // fail before the runs, not after
+        throw InputError("report script '" + script +
+                         "' not found (give one with --report-script, or write only the logs with --no-database)");
     std::error_code ec;
     fs::create_directories(o.outDir, ec);
     if (ec) throw InputError("cannot create output folder '" + o.outDir + "': " + ec.message());
@@ -399,13 +406,24 @@ int runBench(const BenchOptions &o)
     if (std::system(cmd.c_str()) != 0)
         throw std::runtime_error("ompl_benchmark_statistics failed (is Debian's ompl-demos installed? see " +
                                  (fs::path(o.outDir) / "ompl_benchmark_statistics.out").string() + ")");
-    const std::string script = o.reportScript.empty() ? GRIDCAR_REPORT_SCRIPT : o.reportScript;
     cmd = "/usr/bin/python3 '" + script + "' --db '" + db.string() + "' --paths '" + pathsFile.string() + "' --out '" +
           o.outDir + "' --title '" + p.name + "'";
     std::fprintf(stderr, "[bench] %s: report and plots\n", p.name.c_str());
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("the report script failed: " + cmd);
     std::fprintf(stderr, "[bench] %s: done: %s/report.md\n", p.name.c_str(), o.outDir.c_str());
     return 0;
+}
+
+std::string defaultReportScript()
+{
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec)
+    {
+        const fs::path installed = (exe.parent_path() / GRIDCAR_INSTALLED_REPORT_SCRIPT).lexically_normal();
+        if (fs::is_regular_file(installed, ec)) return installed.string();
+    }
+    return GRIDCAR_REPORT_SCRIPT;
 }
 
 }  // namespace gridcar::cli

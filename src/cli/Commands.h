@@ -116,10 +116,14 @@ struct BenchOptions
     double timeLimit{0.0};      ///< > 0 overrides the problem file's
     unsigned runs{0};           ///< > 0 overrides the problem file's
     bool noDatabase{false};     ///< only the .log files
-    std::string reportScript;   ///< empty: the one in the source tree
+    std::string reportScript;   ///< empty: defaultReportScript()
 };
 /// Benchmark of one problem file; exit 0 also when the problem's shared map is absent (skipped).
 int runBench(const BenchOptions &o);
+/// The report script `bench` runs unless told otherwise: the installed copy next to an
+/// installed gridcar (BINDIR/../share/gridcar/bench_report.py) if there is one, else the
+/// source tree's scripts/bench_report.py.
+std::string defaultReportScript();
 
 struct PaperIOptions
 {

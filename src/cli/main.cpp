@@ -146,7 +146,9 @@ int main(int argc, char **argv)
     cBench->add_option("--time-limit", bench.timeLimit, "Seconds per run (overrides the problem file)");
     cBench->add_option("--runs", bench.runs, "Runs per planner (overrides the problem file)");
     cBench->add_flag("--no-database", bench.noDatabase, "Write only the .log files (no database, no report)");
-    cBench->add_option("--report-script", bench.reportScript, "The report script (default: scripts/bench_report.py of the source tree)");
+    cBench->add_option("--report-script", bench.reportScript,
+                       "The report script (default: " + defaultReportScript() +
+                           ", the installed copy next to an installed gridcar, else the source tree's)");
 
     PaperIOptions paper;
     auto *cPaper = app.add_subcommand(

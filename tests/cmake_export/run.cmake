@@ -1,5 +1,5 @@
 # Installs the build tree into a temporary prefix, then configures, builds and runs the
-# consumer project against it. Invoked by CTest (see tests/CMakeLists.txt).
+# consumer project against it, and checks the installed gridcar finds its installed files.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK}/prefix"
@@ -19,4 +19,13 @@ endif()
 execute_process(COMMAND "${WORK}/build/consumer" RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the consumer failed: ${rc}")
+endif()
+# the installed gridcar runs the installed report script, not the source tree's
+execute_process(COMMAND "${WORK}/prefix/bin/gridcar" bench --help OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "installed gridcar bench --help failed: ${rc}")
+endif()
+string(FIND "${out}" "${WORK}/prefix/share/gridcar/bench_report.py" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "the installed gridcar does not default to the installed report script: ${out}")
 endif()
