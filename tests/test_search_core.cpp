@@ -93,3 +93,127 @@ TEST(SearchCore, OpenListPopsInExactlyTheOrderOfOnePriorityQueue)
         EXPECT_GT(popped, 5000);
     }
 }
+
+TEST(SearchCore, IndexedOpenListPopsInOrderWithDecreaseKey)
+{
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> fi(0, 400), gi(0, 50), op(0, 9);
+    const std::uint32_t n = 500;
+    std::vector<std::uint32_t> pos(n);
+    IndexedOpenList open(pos.data());
+    std::vector<int> inList(n, 0);
+    std::vector<OpenEntry> current(n);  // the key each state in the list has now
+    int pops = 0, decreases = 0;
+    for (int i = 0; i < 30000; ++i)
+    {
+        const int o = op(rng);
+        std::uint32_t s = std::uint32_t(rng() % n);
+        if (o < 4 && !inList[s])
+        {
+            const OpenEntry e(fi(rng) * 0.5, float(gi(rng)), s);
+            open.push(e);
+            current[s] = e;
+            inList[s] = 1;
+        }
+        else if (o < 7)
+        {
+            std::uint32_t t = s;  // a state in the list, if any
+            while (!inList[t] && (t = (t + 1) % n) != s)
+            {
+            }
+            if (!inList[t]) continue;
+            s = t;
+            // a lower key: lower f (and any g)
+            const OpenEntry old = current[s];
+            const double f = old.f() - 0.5 * (1 + fi(rng) % 5);
+            const OpenEntry e(f, float(gi(rng)), s);
+            open.decrease(e);
+            current[s] = e;
+            ++decreases;
+        }
+        else if (!open.empty())
+        {
+            const OpenEntry e = open.pop();
+            // the least key among the states in the list
+            std::uint32_t best = n;
+            for (std::uint32_t t = 0; t < n; ++t)
+                if (inList[t] && (best == n || openBefore(current[t], current[best]))) best = t;
+            ASSERT_EQ(e.s(), best) << "pop " << pops;
+            ASSERT_EQ(e.key, current[best].key);
+            inList[best] = 0;
+            ++pops;
+        }
+    }
+    EXPECT_GT(pops, 5000);
+    EXPECT_GT(decreases, 3000);
+}
+
+namespace
+{
+// 8-connected random grid with octile costs, no corner cutting: a small expander for astar()
+struct RandomGridExpander
+{
+    int W, H;
+    std::vector<char> blocked;
+    std::uint32_t goal;
+    double octile(int c, int r) const
+    {
+        const int dx = std::abs(int(goal % W) - c), dy = std::abs(int(goal / W) - r);
+        return std::max(dx, dy) + (std::sqrt(2.0) - 1.0) * std::min(dx, dy);
+    }
+    double heuristic(std::uint32_t s) const { return octile(int(s % W), int(s / W)); }
+    bool isGoal(std::uint32_t s) const { return s == goal; }
+    bool free(int c, int r) const { return c >= 0 && r >= 0 && c < W && r < H && !blocked[r * W + c]; }
+    template <class Emit>
+    void successors(std::uint32_t s, Emit &&emit) const
+    {
+        const int c = int(s % W), r = int(s / W);
+        for (int dc = -1; dc <= 1; ++dc)
+            for (int dr = -1; dr <= 1; ++dr)
+            {
+                if ((dc == 0 && dr == 0) || !free(c + dc, r + dr)) continue;
+                if (dc != 0 && dr != 0 && (!free(c + dc, r) || !free(c, r + dr))) continue;
+                emit(std::uint32_t((r + dr) * W + c + dc), (dc != 0 && dr != 0) ? std::sqrt(2.0) : 1.0,
+                     heuristic(std::uint32_t((r + dr) * W + c + dc)));
+            }
+    }
+};
+}  // namespace
+
+// The dense space searches with the decrease-key open list, the hash space with lazy deletion:
+// both must expand the same states in the same order and agree on every g and parent.
+TEST(SearchCore, DecreaseKeyAndLazyDeletionSearchesAreIdentical)
+{
+    int compared = 0;
+    for (unsigned seed = 1; seed <= 12; ++seed)
+    {
+        std::mt19937 rng(seed);
+        RandomGridExpander ex{60, 45, {}, 0};
+        ex.blocked.resize(std::size_t(ex.W) * ex.H);
+        for (auto &b : ex.blocked) b = (rng() % 100) < 25;
+        const std::uint32_t start = rng() % (ex.W * ex.H), goal = rng() % (ex.W * ex.H);
+        ex.blocked[start] = ex.blocked[goal] = 0;
+        ex.goal = goal;
+        SearchSpace dense(std::size_t(ex.W) * ex.H);
+        HashSearchSpace hash;
+        const auto never = [] { return false; };
+        const SearchResult a = astar(dense, {start}, ex, never);
+        const SearchResult b = astar(hash, {start}, ex, never);
+        ASSERT_EQ(a.outcome, b.outcome) << "seed " << seed;
+        EXPECT_EQ(a.expanded, b.expanded) << "seed " << seed;
+        EXPECT_EQ(a.goal, b.goal);
+        EXPECT_EQ(a.closest, b.closest);
+        std::size_t closed = 0;
+        for (std::uint32_t s = 0; s < std::uint32_t(ex.W * ex.H); ++s)
+        {
+            ASSERT_EQ(dense.closed(s), hash.closed(s)) << "seed " << seed << " state " << s;
+            if (!dense.seen(s)) continue;
+            ASSERT_EQ(dense.g(s), hash.g(s)) << "seed " << seed << " state " << s;
+            ASSERT_EQ(dense.parent(s), hash.parent(s)) << "seed " << seed << " state " << s;
+            closed += dense.closed(s);
+        }
+        EXPECT_EQ(closed, a.expanded);
+        if (a.outcome == SearchOutcome::Found) ++compared;
+    }
+    EXPECT_GE(compared, 6);
+}

@@ -45,12 +45,24 @@ public:
         r.g = g;
     }
     void close(std::uint32_t s) { rec_[s].stamp = (epoch_ << 1) | 1u; }
+    /// Where an open state's entry sits in the open list (IndexedOpenList); meaningless for
+    /// states that are not open. A separate array, allocated on first use.
+    std::uint32_t *heapPositions()
+    {
+        if (!pos_)
+        {
+            pos_ = static_cast<std::uint32_t *>(std::calloc(n_, sizeof(std::uint32_t)));
+            if (!pos_) throw std::bad_alloc();
+        }
+        return pos_;
+    }
 
     static constexpr std::uint32_t kNoParent = std::numeric_limits<std::uint32_t>::max();
 
 private:
     std::size_t n_;
     std::uint32_t epoch_{0};
+    std::uint32_t *pos_{nullptr};
     struct Record
     {
         std::uint32_t stamp;
@@ -311,6 +323,78 @@ private:
 };
 
 /**
+ * @brief Binary min-heap of OpenEntry with decrease-key: at most one entry per state, whose
+ * position is kept in an array indexed by state (SearchSpace::heapPositions()).
+ *
+ * Used by astar() when the priority is f = g + h: an improved g then always lowers the entry's
+ * key, so decrease() only sifts up, and the pop order is exactly that of the lazy-deletion
+ * OpenList, without its stale entries (on the Moving AI maps about half of all lazy pops were
+ * stale: a cell is often reached diagonally first and then more cheaply straight).
+ * pop() moves the hole down to a leaf along the lesser children, then sifts the last entry up
+ * (one compare per level on the way down).
+ */
+class IndexedOpenList
+{
+public:
+    explicit IndexedOpenList(std::uint32_t *positions) : pos_(positions) {}
+    bool empty() const { return h_.empty(); }
+    void push(const OpenEntry &e)
+    {
+        h_.emplace_back();
+        siftUp(h_.size() - 1, e);
+    }
+    /// Lowers the key of @p e's state, which must be in the list with a key not below e's.
+    void decrease(const OpenEntry &e) { siftUp(pos_[e.s()], e); }
+    OpenEntry pop()
+    {
+        const OpenEntry top = h_.front();
+        const OpenEntry last = h_.back();
+        h_.pop_back();
+        const std::size_t n = h_.size();
+        if (n == 0) return top;
+        std::size_t i = 0;
+        for (std::size_t c = 1; c < n; c = 2 * i + 1)
+        {
+            if (c + 1 < n && openBefore(h_[c + 1], h_[c])) ++c;
+            place(i, h_[c]);
+            i = c;
+        }
+        siftUp(i, last);
+        return top;
+    }
+
+private:
+    void place(std::size_t i, const OpenEntry &e)
+    {
+        h_[i] = e;
+        pos_[e.s()] = std::uint32_t(i);
+    }
+    void siftUp(std::size_t i, const OpenEntry &e)
+    {
+        while (i > 0)
+        {
+            const std::size_t p = (i - 1) / 2;
+            if (!openBefore(e, h_[p])) break;
+            place(i, h_[p]);
+            i = p;
+        }
+        place(i, e);
+    }
+    std::uint32_t *pos_;
+    std::vector<OpenEntry> h_;
+};
+
+/// True if the search space keeps heap positions (SearchSpace; not HashSearchSpace).
+template <class S, class = void>
+struct HasHeapPositions : std::false_type
+{
+};
+template <class S>
+struct HasHeapPositions<S, std::void_t<decltype(std::declval<S &>().heapPositions())>> : std::true_type
+{
+};
+
+/**
  * @brief A* over the states of @p space.
  *
  * The expander supplies the problem:
@@ -326,17 +410,21 @@ private:
  * open list is then ordered by it instead of f = g + h (paper I's f = g' + h (1 + o) + s); the
  * closest state for an approximate solution is still the one of least heuristic().
  * @p reopen: with an inconsistent heuristic or priority, a closed state reached again with a
- * cheaper g is reopened (default) or left closed (a best-first search that keeps its first
- * parent).
+ * cheaper g (by more than kReopenTolerance relative: not rounding noise) is reopened (default)
+ * or left closed (a best-first search that keeps its first parent).
  *
  * Works on a SearchSpace (dense arrays) or a HashSearchSpace.
  *
- * Open list: OpenList (binary heaps) with lazy deletion (stale entries are skipped when popped).
- * Tie-breaking is deterministic: lower f first, then higher g (deeper states, fewer
+ * Open list: with f = g + h on a SearchSpace, IndexedOpenList (one entry per state,
+ * decrease-key); otherwise OpenList (binary heaps with lazy deletion: stale entries are skipped
+ * when popped). Both pop in the same order. Tie-breaking is deterministic: lower f first, then higher g (deeper states, fewer
  * re-expansions on plateaus), then lower state index. @p cancelled is polled every 256
  * expansions. With a consistent heuristic each state is expanded at most once; with an
  * inconsistent one (paper I's mode) a closed state is reopened when a cheaper g reaches it.
  */
+/// Relative improvement of g below which astar() does not reopen a closed state.
+constexpr double kReopenTolerance = 1e-9;
+
 template <class Space, class Expander, class Cancelled>
 SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expander &ex, Cancelled &&cancelled,
                    std::uint64_t *progress = nullptr, bool reopen = true)
@@ -351,9 +439,17 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
             return g + h;
         }
     };
+    // f = g + h on dense arrays: decrease-key heap; otherwise (a custom priority may rise when g
+    // falls, or a hash space without positions) lazy deletion
+    constexpr bool indexed = !custom && HasHeapPositions<Space>::value;
     SearchResult res;
     space.reset();
-    OpenList heap;
+    auto heap = [&] {
+        if constexpr (indexed)
+            return IndexedOpenList(space.heapPositions());
+        else
+            return OpenList();
+    }();
     for (std::uint32_t s : starts)
     {
         if (space.seen(s)) continue;
@@ -364,9 +460,10 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
     while (!heap.empty())
     {
         const OpenEntry e = heap.pop();
-        // Stale entries: h is fixed per state, so of a state's entries the one with the least g
-        // has the least f and pops first; the state is closed then, and later (stale) entries of
-        // it are skipped here. A reopened state (cheaper g found) pops its new entry first too.
+        // Stale entries (lazy deletion only): h is fixed per state, so of a state's entries the
+        // one with the least g has the least f and pops first; the state is closed then, and
+        // later (stale) entries of it are skipped here. A reopened state (cheaper g found) pops
+        // its new entry first too.
         const std::uint32_t es = e.s();
         if (space.closed(es)) continue;
         const double g = space.g(es);
@@ -396,17 +493,29 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
         }
         ex.successors(es, [&](std::uint32_t n, double cost, auto &&hn) {
             const double ng = g + cost;
-            if (ng < space.g(n) && (reopen || !space.closed(n)))
+            const double gn = space.g(n);  // +inf if not seen in this search
+            if (!(ng < gn)) return;
+            // a closed state is reopened only for a real improvement: equal-cost paths summed in
+            // a different order differ in the last bits, and that noise must not re-expand it
+            const bool wasClosed = space.closed(n);
+            if (wasClosed && (!reopen || ng >= gn - kReopenTolerance * gn)) return;
+            space.open(n, ng, es);
+            double h;
+            if constexpr (std::is_invocable_v<decltype(hn)>)
+                h = hn();  // evaluated only for successors whose g improved
+            else
+                h = hn;
+            const OpenEntry entry(priorityOf(ng, h, n), float(ng), n);
+            if constexpr (indexed)
             {
-                space.open(n, ng, es);
-                double h;
-                if constexpr (std::is_invocable_v<decltype(hn)>)
-                    h = hn();  // evaluated only for successors whose g improved
+                if (gn < std::numeric_limits<double>::infinity() && !wasClosed)
+                    heap.decrease(entry);  // in the list: same h, lower g, a lower key
                 else
-                    h = hn;
-                heap.push({priorityOf(ng, h, n), float(ng), n});
-                ++res.generated;
+                    heap.push(entry);
             }
+            else
+                heap.push(entry);
+            ++res.generated;
         });
     }
     res.outcome = SearchOutcome::Exhausted;
@@ -421,7 +530,11 @@ inline SearchSpace::SearchSpace(std::size_t n) : n_(n)
     if (!rec_) throw std::bad_alloc();
 }
 
-inline SearchSpace::~SearchSpace() { std::free(rec_); }
+inline SearchSpace::~SearchSpace()
+{
+    std::free(rec_);
+    std::free(pos_);
+}
 
 inline void SearchSpace::reset()
 {
