@@ -159,7 +159,8 @@ int main(int argc, char **argv)
     cPaper->add_option("--shared", paper.sharedDir, "Folder holding maps/ros/tsudanuma_campus (skipped if absent)")
         ->capture_default_str();
     cPaper->add_option("--time-limit", paper.timeLimit, "Seconds per query")->capture_default_str();
-    cPaper->add_option("--maps", paper.maps, "Only these of campus, tsudanuma-0.298, tsudanuma (default: all found)");
+    cPaper->add_option("--maps", paper.maps, "Only these of campus, tsudanuma-0.298, tsudanuma, comma-separated (default: all found)")
+        ->delimiter(',');
     cPaper->add_flag("--skip-native", paper.skipNative, "Do not run the native 0.05 m/cell Tsudanuma map (the slow part)");
 
     auto *cScen = app.add_subcommand("scen", "Run a Moving AI scenario file and compare with the published optimal lengths");
