@@ -43,9 +43,9 @@ TEST(SearchCore, OpenEntryOrderIsLowerFThenHigherGThenLowerState)
     EXPECT_EQ(e.s(), 42u);
 }
 
-// The open list keeps plateau entries in a second heap; whatever goes where, the pops must come
-// out exactly as from one priority queue, also when pushes fall below the last popped f (an
-// inconsistent heuristic or priority).
+// The lazy open list must pop exactly as one priority queue over (f, -g, state), with ties on f
+// (plateaus, and f values one ulp apart) and pushes below the last popped f (an inconsistent
+// heuristic or priority).
 TEST(SearchCore, OpenListPopsInExactlyTheOrderOfOnePriorityQueue)
 {
     for (int seed = 0; seed < 6; ++seed)
