@@ -2,8 +2,8 @@
 // the first argument) with astar-octile and dijkstra on the point vehicle, checks each length
 // against the published optimum, and reports queries/s and expansions/s on one core.
 // Output: one table (Markdown) on stdout; progress on stderr.
+#include "gridcar/bench/MovingAi.h"
 #include "gridcar/map/MapIO.h"
-#include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/Setup.h"
 
@@ -19,7 +19,6 @@
 
 using namespace gridcar;
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 int main(int argc, char **argv)
 {
@@ -51,27 +50,10 @@ int main(int argc, char **argv)
             const auto scen = loadScenario(m.string() + ".scen");
             GridSetup setup = makeGridSetup(grid, VehicleParams::preset("point"));
             auto p = makePlanner(setup.ss->getSpaceInformation(), planner);
-            auto *gp = dynamic_cast<GridPlanner *>(p.get());
-            setup.ss->setPlanner(p);
-            setup.ss->setup();
-            std::uint64_t exp = 0;
-            double solveSec = 0, searchSec = 0;
-            std::size_t matched = 0;
-            for (std::size_t i = 0; i < scen.size(); ++i)
-            {
-                const auto &e = scen[i];
-                setup.ss->clear();
-                setup.setStartAndGoal({grid->cellCenterX(e.startX), grid->cellCenterY(e.startY), 0.0},
-                                      {grid->cellCenterX(e.goalX), grid->cellCenterY(e.goalY), 0.0});
-                const auto t0 = Clock::now();
-                const auto st = setup.ss->solve(60.0);
-                solveSec += std::chrono::duration<double>(Clock::now() - t0).count();
-                searchSec += gp->lastSearchSeconds();
-                exp += gp->expandedNodes();
-                if (st == ompl::base::PlannerStatus::EXACT_SOLUTION &&
-                    std::abs(gp->lastCost() - e.optimalLength) <= std::max(1e-3, 1e-5 * e.optimalLength))
-                    ++matched;
-            }
+            const bench::ScenarioStats st = bench::runScenarios(setup, p, scen, m.string() + ".scen");
+            const std::uint64_t exp = st.expanded;
+            const double solveSec = st.solveSeconds, searchSec = st.searchSeconds;
+            const std::size_t matched = st.matched;
             failures += int(scen.size() - matched);
             std::printf("| %s | %s | %zu | %zu | %.3f | %.2f | %.2f |\n", m.filename().c_str(), planner.c_str(),
                         scen.size(), matched, 1000.0 * solveSec / scen.size(), exp / searchSec / 1e6, exp / solveSec / 1e6);

@@ -124,8 +124,14 @@ TEST(ImprovedAStar, HeuristicsObstacleCostAndLattice)
     // the lattice of the paper's car: L_turn = 0.897 R_min = 0.897 x 1.859 m = 1.667 m
     EXPECT_EQ(p->stepsBeforeTurn(0), 6);  // ceil(1.667 / 0.298)
     EXPECT_EQ(p->stepsBeforeTurn(1), 4);  // ceil(1.667 / 0.421)
-    EXPECT_THROW(p->params().setParam("mode", "fast"), ompl::Exception);
-    EXPECT_THROW(p->params().setParam("delta", "-1"), ompl::Exception);
+    // setters throw std::invalid_argument, which OMPL's setParam() turns into false (value kept)
+    const std::string modeBefore = p->mode();
+    EXPECT_FALSE(p->params().setParam("mode", "bogus"));
+    EXPECT_EQ(p->mode(), modeBefore);
+    EXPECT_FALSE(p->params().setParam("delta", "-1"));
+    EXPECT_THROW(p->setMode("fast"), std::invalid_argument);
+    EXPECT_THROW(p->setDelta(-1.0), std::invalid_argument);
+    EXPECT_THROW(p->setHeuristic("magic"), std::invalid_argument);
 }
 
 TEST(ImprovedAStar, IntegralModeEqualsDijkstraOverTheSameCost)

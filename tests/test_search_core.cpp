@@ -1,6 +1,6 @@
 // The search core's building blocks: the open list's order and the integer keys it sorts by.
 // (The A* loop itself is tested through the planners: test_planners.cpp, test_improved_astar.cpp.)
-#include "gridcar/planners/SearchCore.h"
+#include "gridcar/planners/search/AStar.h"
 
 #include <gtest/gtest.h>
 

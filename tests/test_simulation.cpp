@@ -1,6 +1,6 @@
 #include "gridcar/sim/Simulation.h"
 
-#include "gridcar/io/Image.h"
+#include "gridcar/core/Errors.h"
 #include "gridcar/spaces/Setup.h"
 #include "TestData.h"
 

@@ -1,28 +1,21 @@
 #include "gridcar/collision/FootprintChecker.h"
 
+#include "gridcar/core/Angles.h"
+
+#include "collision/detail/FclShapes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/broadphase/default_broadphase_callbacks.h>
-#include <fcl/geometry/shape/box.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/collision_object.h>
 
 namespace gridcar
 {
-namespace
-{
-std::unique_ptr<fcl::CollisionObjectd> makeBox(double cx, double cy, double sx, double sy, double yaw = 0.0)
-{
-    auto geom = std::make_shared<fcl::Boxd>(sx, sy, 1.0);
-    fcl::Transform3d tf = fcl::Transform3d::Identity();
-    tf.translation() = fcl::Vector3d(cx, cy, 0.0);
-    tf.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    return std::make_unique<fcl::CollisionObjectd>(geom, tf);
-}
-}  // namespace
+using detail::makeBox;
 
 FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, std::shared_ptr<const DistanceField> field,
                                    const VehicleParams &vehicle)
@@ -134,9 +127,8 @@ bool FootprintChecker::isValidExact(double x, double y, double yaw) const
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
     if (vehicle_.isPoint()) return !cellBlockedAt(x, y);
     const double off = vehicle_.centreOffset();
-    const double cxw = x + off * std::cos(yaw), cyw = y + off * std::sin(yaw);
-    if (cellBlockedAt(cxw, cyw)) return false;  // centre inside an obstacle or off the map
-    auto body = makeBox(cxw, cyw, vehicle_.length, vehicle_.width, yaw);
+    if (cellBlockedAt(x + off * std::cos(yaw), y + off * std::sin(yaw))) return false;  // centre inside an obstacle or off the map
+    auto body = detail::vehicleBox(vehicle_, x, y, yaw);
     fcl::DefaultCollisionData<double> data;
     manager_->collide(body.get(), &data, fcl::DefaultCollisionFunction<double>);
     return !data.result.isCollision();
@@ -169,6 +161,20 @@ bool FootprintChecker::isValid(double x, double y, double yaw) const
     return isValidExact(x, y, yaw);
 }
 
+bool FootprintChecker::fitsAtSomeHeading(double x, double y, int headings, double *yaw) const
+{
+    for (int k = 0; k < headings; ++k)
+    {
+        const double a = wrapYaw(k * 2.0 * M_PI / headings);
+        if (isValid(x, y, a))
+        {
+            if (yaw) *yaw = a;
+            return true;
+        }
+    }
+    return false;
+}
+
 void FootprintChecker::setSweepFraction(double f)
 {
     if (!(f > 0.0 && f <= 1.0)) throw std::invalid_argument("sweep fraction must be in (0, 1]");
@@ -177,7 +183,7 @@ void FootprintChecker::setSweepFraction(double f)
 
 int FootprintChecker::sweepSteps(const Pose2 &a, const Pose2 &b) const
 {
-    double dyaw = std::remainder(b.yaw - a.yaw, 2.0 * M_PI);
+    const double dyaw = wrapAngle(b.yaw - a.yaw);
     // farthest point of the rectangle from the reference point
     const double reach = vehicle_.isPoint() ? 0.0 :
                                               std::hypot(std::max(vehicle_.rearOverhang, vehicle_.length - vehicle_.rearOverhang),
@@ -188,16 +194,20 @@ int FootprintChecker::sweepSteps(const Pose2 &a, const Pose2 &b) const
     return std::max(1, int(std::ceil(travel / step)));
 }
 
-bool FootprintChecker::isMotionValid(const Pose2 &a, const Pose2 &b) const
+bool FootprintChecker::isMotionValid(const Pose2 &a, const Pose2 &b, double *lastValidT) const
 {
+    if (lastValidT) *lastValidT = 0.0;
     const int n = sweepSteps(a, b);
     if (n < 0 || n > 10000000) return false;
-    const double dyaw = std::remainder(b.yaw - a.yaw, 2.0 * M_PI);
-    if (!isValid(b)) return false;
-    for (int i = 0; i < n; ++i)
+    // without a report of how far the motion is valid, the end pose first (a quick reject)
+    if (!lastValidT && !isValid(b)) return false;
+    const double dyaw = wrapAngle(b.yaw - a.yaw);
+    const int first = lastValidT ? 1 : 0, last = lastValidT ? n : n - 1;
+    for (int i = first; i <= last; ++i)
     {
         const double t = double(i) / n;
         if (!isValid(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.yaw + t * dyaw)) return false;
+        if (lastValidT) *lastValidT = t;
     }
     return true;
 }

@@ -2,6 +2,8 @@
 
 #include "gridcar/path/PostProcess.h"
 
+#include "gridcar/core/Angles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,7 +12,6 @@ namespace gridcar
 {
 namespace
 {
-double wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
 double dist(const Pose2 &a, const Pose2 &b) { return std::hypot(b.x - a.x, b.y - a.y); }
 }  // namespace
 
@@ -30,7 +31,7 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
     {
         const double h0 = std::atan2(pts[i].y - pts[i - 1].y, pts[i].x - pts[i - 1].x);
         const double h1 = std::atan2(pts[i + 1].y - pts[i].y, pts[i + 1].x - pts[i].x);
-        const double d = std::abs(wrap(h1 - h0));
+        const double d = std::abs(wrapAngle(h1 - h0));
         if (d > 1e-6)
         {
             ++m.turningPoints;
@@ -66,7 +67,7 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
         {
             const double a1 = std::atan2(res[k].y - res[k - w].y, res[k].x - res[k - w].x);
             const double a2 = std::atan2(res[k + w].y - res[k].y, res[k + w].x - res[k].x);
-            const bool turning = std::abs(wrap(a2 - a1)) > thr;
+            const bool turning = std::abs(wrapAngle(a2 - a1)) > thr;
             if (turning && !inTurn) ++m.turns;
             inTurn = turning;
         }

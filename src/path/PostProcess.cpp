@@ -1,5 +1,7 @@
 #include "gridcar/path/PostProcess.h"
 
+#include "gridcar/core/Angles.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,7 +14,6 @@ namespace
 constexpr double kInf = std::numeric_limits<double>::infinity();
 double dist(const Pose2 &a, const Pose2 &b) { return std::hypot(b.x - a.x, b.y - a.y); }
 double heading(const Pose2 &a, const Pose2 &b) { return std::atan2(b.y - a.y, b.x - a.x); }
-double wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
 
 /// Straight leg a -> b with the yaw of the leg at both ends, swept.
 bool legValid(const FootprintChecker &checker, const Pose2 &a, const Pose2 &b)
@@ -43,7 +44,7 @@ std::vector<Pose2> turningPoints(const std::vector<Pose2> &path)
     std::vector<Pose2> out{pts.front()};
     for (std::size_t i = 1; i + 1 < pts.size(); ++i)
     {
-        const double turn = wrap(heading(pts[i], pts[i + 1]) - heading(out.back(), pts[i]));
+        const double turn = wrapAngle(heading(pts[i], pts[i + 1]) - heading(out.back(), pts[i]));
         if (std::abs(turn) > 1e-6) out.push_back(pts[i]);
     }
     out.push_back(pts.back());
@@ -78,7 +79,7 @@ BezierCorner bezierCorner(const Pose2 &p0, const Pose2 &p1, const Pose2 &p2, boo
     bc.p = p1;
     bc.a = {p1.x - a * std::cos(h0), p1.y - a * std::sin(h0), h0};
     bc.c = {p1.x + a * std::cos(h2), p1.y + a * std::sin(h2), h2};
-    const double theta = std::abs(wrap(h2 - h0));
+    const double theta = std::abs(wrapAngle(h2 - h0));
     const double ch = std::cos(theta / 2);
     bc.maxCurvature = theta < 1e-12 ? 0.0 : (a <= 0 || ch < 1e-12) ? kInf : std::sin(theta / 2) / (a * ch * ch);
     return bc;
@@ -160,7 +161,7 @@ void adjustAndSmooth(SmoothingResult &r, std::vector<Pose2> pts, const Footprint
     {
         CornerReport cr;
         cr.point = pts[i];
-        cr.turnDeg = std::abs(wrap(heading(pts[i], pts[i + 1]) - heading(pts[i - 1], pts[i]))) * 180.0 / M_PI;
+        cr.turnDeg = std::abs(wrapAngle(heading(pts[i], pts[i + 1]) - heading(pts[i - 1], pts[i]))) * 180.0 / M_PI;
         cr.parabolaCurvature = parabolaCurvature(pts[i - 1], pts[i], pts[i + 1]);
         const BezierCorner bc = bezierCorner(pts[i - 1], pts[i], pts[i + 1], i == 1, i + 2 == n);
         cr.bezierCurvature = bc.maxCurvature;

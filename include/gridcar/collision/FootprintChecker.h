@@ -2,7 +2,8 @@
 /// @file FootprintChecker.h
 /// @brief Body-contour collision checking of a vehicle rectangle on an occupancy grid (FCL).
 
-#include "gridcar/collision/VehicleParams.h"
+#include "gridcar/core/Pose2.h"
+#include "gridcar/vehicle/VehicleParams.h"
 #include "gridcar/distance/DistanceField.h"
 #include "gridcar/map/OccupancyGrid.h"
 
@@ -21,12 +22,6 @@ class CollisionObject;
 
 namespace gridcar
 {
-/// A pose of the vehicle's reference point (rear-axle centre): world x, y (m), yaw (rad).
-struct Pose2
-{
-    double x{0}, y{0}, yaw{0};
-};
-
 /**
  * @brief Exact collision checking of the vehicle rectangle against the blocked cells of a map.
  *
@@ -67,6 +62,9 @@ public:
     /// True if the vehicle rectangle at the pose overlaps no blocked cell. NaN/inf: false.
     bool isValid(double x, double y, double yaw) const;
     bool isValid(const Pose2 &p) const { return isValid(p.x, p.y, p.yaw); }
+    /// True if the vehicle fits at (x, y) at one of @p headings equally spaced yaws (k 2 pi /
+    /// headings, from 0 up, wrapped into [-pi, pi)); @p yaw receives the first that fits.
+    bool fitsAtSomeHeading(double x, double y, int headings, double *yaw = nullptr) const;
     /// The exact FCL test alone, no distance-field shortcut (for tests and benchmarks).
     bool isValidExact(double x, double y, double yaw) const;
 
@@ -74,8 +72,11 @@ public:
      * @brief Swept check: the straight motion from @p a to @p b (yaw along the shorter way) is
      * valid if the footprint is free at poses spaced so that no point of the rectangle moves
      * more than sweepFraction() * resolution between two checks (both ends included).
+     * With @p lastValidT, the poses are checked in order from @p a and *lastValidT is set to
+     * the largest fraction of the motion found valid before the first collision (for OMPL's
+     * MotionValidator); @p a itself is then taken as checked.
      */
-    bool isMotionValid(const Pose2 &a, const Pose2 &b) const;
+    bool isMotionValid(const Pose2 &a, const Pose2 &b, double *lastValidT = nullptr) const;
     double sweepFraction() const { return sweepFraction_; }
     void setSweepFraction(double f);
     /// Number of poses isMotionValid() checks for this motion.

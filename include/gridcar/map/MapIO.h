@@ -2,7 +2,7 @@
 /// @file MapIO.h
 /// @brief Readers and writers for occupancy-grid map files.
 
-#include "gridcar/io/Image.h"
+#include "gridcar/image/Image.h"
 #include "gridcar/map/OccupancyGrid.h"
 
 #include <string>

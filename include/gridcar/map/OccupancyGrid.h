@@ -2,6 +2,8 @@
 /// @file OccupancyGrid.h
 /// @brief Occupancy grid in the ROS map_server convention.
 
+#include "gridcar/core/Pose2.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -15,15 +17,6 @@ enum class CellState : std::uint8_t
     Free = 0,
     Occupied = 1,
     Unknown = 2
-};
-
-/// Integer cell coordinate: column (x to the right) and row (row 0 is the TOP image row).
-struct Cell
-{
-    int col{0};
-    int row{0};
-    bool operator==(const Cell &o) const { return col == o.col && row == o.row; }
-    bool operator!=(const Cell &o) const { return !(*this == o); }
 };
 
 /// Largest number of cells a map may have (about 1.1 GB of cell data would be absurd for a

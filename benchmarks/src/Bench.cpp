@@ -1,0 +1,299 @@
+// gridcar bench PROBLEM.yaml: ompl::tools::Benchmark of our planners against OMPL's on one
+// problem file, then the SQLite database (ompl_benchmark_statistics) and the report.
+#include "gridcar/bench/Bench.h"
+
+#include "gridcar/bench/Problem.h"
+#include "gridcar/map/CampusGenerator.h"
+#include "gridcar/map/MapIO.h"
+#include "gridcar/objectives/Objectives.h"
+#include "gridcar/path/PathMetrics.h"
+#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/render/Render.h"
+#include "gridcar/sim/Simulation.h"
+#include "gridcar/spaces/OmplAdapters.h"
+#include "gridcar/spaces/Setup.h"
+
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/tools/benchmark/Benchmark.h>
+#include <ompl/util/Console.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#ifndef GRIDCAR_REPORT_SCRIPT
+#define GRIDCAR_REPORT_SCRIPT "scripts/bench_report.py"
+#endif
+#ifndef GRIDCAR_INSTALLED_REPORT_SCRIPT
+#define GRIDCAR_INSTALLED_REPORT_SCRIPT "../share/gridcar/bench_report.py"  // relative to the executable
+#endif
+
+namespace gridcar::bench
+{
+namespace
+{
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// The map, vehicle, setup and objective of a problem, checked before anything runs.
+struct BenchWorld
+{
+    std::shared_ptr<OccupancyGrid> grid;
+    VehicleParams vehicle;
+    GridSetup setup;
+};
+
+BenchWorld loadWorld(const Problem &p)
+{
+    BenchWorld w;
+    std::fprintf(stderr, "[bench] %s: loading %s\n", p.name.c_str(), p.map.c_str());
+    w.grid = std::make_shared<OccupancyGrid>(p.map == "embedded" ? generateCampus() : loadMap(p.map));
+    if (p.resample > 0) *w.grid = w.grid->resampled(p.resample);
+    w.grid->setUnknownIsFree(p.unknownFree);
+    try
+    {
+        const fs::path vf = fs::path(p.file).parent_path() / p.vehicle;
+        w.vehicle = VehicleParams::fromNameOrFile(fs::exists(vf) && p.vehicle.find('.') != std::string::npos ? vf.string() : p.vehicle);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        bad(p, e.what());
+    }
+    // every planner name must be known before anything runs
+    for (const PlannerSpec &s : p.planners)
+        if (!isPlannerName(s.name)) bad(p, "unknown planner '" + s.name + "'");
+    std::fprintf(stderr, "[bench] %s: distance field and footprint checker for %d x %d cells...\n", p.name.c_str(),
+                 w.grid->width(), w.grid->height());
+    w.setup = makeGridSetup(w.grid, w.vehicle);
+    try
+    {
+        w.setup.ss->setOptimizationObjective(
+            makeObjective(p.objective, w.setup.ss->getSpaceInformation(), *w.setup.checker, p.delta));
+    }
+    catch (const std::invalid_argument &e)
+    {
+        bad(p, e.what());
+    }
+    return w;
+}
+
+/// Path measures, driving time and the simulated drive of a run's solution, as Benchmark run
+/// properties.
+void addRunProperties(const BenchWorld &w, const ompl::base::Planner &planner, const std::vector<Pose2> &poses,
+                      ompl::tools::Benchmark::RunProperties &run)
+{
+    const PathMetrics m = computePathMetrics(poses, w.setup.checker.get());
+    run["path length REAL"] = std::to_string(m.length);  // OMPL's solution length adds yaw distance
+    run["turns INTEGER"] = std::to_string(m.turns);
+    run["max turn deg REAL"] = std::to_string(m.maxTurnDeg);
+    run["max curvature REAL"] = std::to_string(std::isfinite(m.maxCurvature) ? m.maxCurvature : 1e9);
+    run["min clearance REAL"] = std::to_string(m.minClearance);
+    run["path distance REAL"] = std::to_string(m.minPathDistance);
+    run["driving time REAL"] = std::to_string(drivingTime(poses, w.vehicle));
+    // the path driven by paper C's potential-field follower in the kinematic simulation
+    FollowerParams fp;
+    fp.recordTrajectory = false;
+    const DriveResult dr = drivePath(poses, *w.setup.checker, Scenario(), fp);
+    run["sim reached BOOLEAN"] = dr.outcome == DriveResult::Outcome::Reached ? "1" : "0";
+    if (dr.outcome == DriveResult::Outcome::Reached) run["sim driving time REAL"] = std::to_string(dr.drivingTime);
+    if (planner.getPlannerProgressProperties().count("expanded nodes INTEGER"))
+        run["expanded nodes INTEGER"] = std::to_string(std::uint64_t(progressValue(planner, "expanded nodes INTEGER")));
+}
+
+/// A picture of a query's surroundings for the report; its entry in the paths file.
+void drawQuery(const BenchWorld &w, const std::string &outDir, const std::string &expName, const std::string &tag,
+               const Pose2 &start, const Pose2 &goal, nlohmann::json &pathsJson)
+{
+    WorldBox box;
+    box.add(start.x, start.y);
+    box.add(goal.x, goal.y);
+    for (auto it = pathsJson.begin(); it != pathsJson.end(); ++it)
+        if (it.key().rfind(expName + "|", 0) == 0)
+            for (const auto &pt : *it) box.add(pt[0].get<double>(), pt[1].get<double>());
+    const OccupancyGrid crop = cropAround(*w.grid, box, 15.0);
+    MapCanvas canvas(crop, 1200);
+    const std::string png = expName + tag + "-map.png";
+    canvas.save((fs::path(outDir) / png).string());
+    pathsJson["_maps"][expName] = {{"image", png},
+                                   {"extent", {crop.originX(), crop.originX() + crop.sizeX(), crop.originY(),
+                                               crop.originY() + crop.sizeY()}},
+                                   {"start", {start.x, start.y}},
+                                   {"goal", {goal.x, goal.y}}};
+}
+
+/// The state of a benchmark run over several queries: what this shard runs, the progress
+/// counters, the solution paths for the plots and the logs written.
+struct BenchRun
+{
+    BenchRun(const Problem &problem, BenchWorld &world, const BenchOptions &options, std::string shardTag)
+      : p(problem), w(world), o(options), tag(std::move(shardTag))
+    {
+    }
+    const Problem &p;
+    BenchWorld &w;
+    const BenchOptions &o;
+    std::string tag;  ///< "-shardKofN" or empty
+    std::vector<std::vector<std::size_t>> mine;  ///< per query: the planners this shard runs
+    std::size_t total{0}, unitsStarted{0};
+    Clock::time_point t0{Clock::now()};
+    nlohmann::json pathsJson = nlohmann::json::object();
+    std::vector<std::string> logs;
+};
+
+/// Benchmarks query @p qi with this shard's planners and writes its .log and picture.
+void benchmarkQuery(BenchRun &run, std::size_t qi)
+{
+    const Problem &p = run.p;
+    GridSetup &setup = run.w.setup;
+    bool startYaw = false, goalYaw = false;
+    const Pose2 start = readPose(p, p.queries[qi], "start", *run.w.grid, startYaw, qi);
+    const Pose2 goal = readPose(p, p.queries[qi], "goal", *run.w.grid, goalYaw, qi);
+    const std::string q = "query " + std::to_string(qi + 1);
+    if (!setup.checker->isValid(start)) bad(p, q + ": the start is off the map or in collision for " + run.w.vehicle.name);
+    if (!setup.checker->isValid(goal)) bad(p, q + ": the goal is off the map or in collision for " + run.w.vehicle.name);
+    setup.ss->clear();
+    setup.setStartAndGoal(start, goal);
+    const std::string expName = p.name + "-q" + std::to_string(qi + 1);
+    ompl::tools::Benchmark b(*setup.ss, expName);
+    b.addExperimentParameter("query", "INTEGER", std::to_string(qi + 1));
+    b.addExperimentParameter("start_x", "REAL", std::to_string(start.x));
+    b.addExperimentParameter("start_y", "REAL", std::to_string(start.y));
+    b.addExperimentParameter("goal_x", "REAL", std::to_string(goal.x));
+    b.addExperimentParameter("goal_y", "REAL", std::to_string(goal.y));
+    for (std::size_t k : run.mine[qi])
+    {
+        const PlannerSpec spec = p.planners[k];
+        b.addPlannerAllocator([spec, startYaw, &p](const ompl::base::SpaceInformationPtr &si) {
+            ompl::base::PlannerPtr pl;
+            try
+            {
+                pl = configurePlanner(si, {spec.name, spec.params, !startYaw, false});
+            }
+            catch (const InputError &e)
+            {
+                bad(p, "planner " + spec.label + ": " + e.what());
+            }
+            pl->setName(spec.label);
+            return pl;
+        });
+    }
+    std::map<std::string, unsigned> runOf;
+    b.setPreRunEvent([&](const ompl::base::PlannerPtr &pl) {
+        const unsigned r = ++runOf[pl->getName()];
+        if (r == 1) ++run.unitsStarted;
+        const double el = std::chrono::duration<double>(Clock::now() - run.t0).count();
+        std::fprintf(stderr, "[bench] %s %s (%zu/%zu): %-22s run %u/%u  (elapsed %.0f s)\n", p.name.c_str(), q.c_str(),
+                     run.unitsStarted, run.total, pl->getName().c_str(), r, p.runs, el);
+    });
+    b.setPostRunEvent([&](const ompl::base::PlannerPtr &pl, ompl::tools::Benchmark::RunProperties &props) {
+        const auto &pdef = setup.ss->getProblemDefinition();
+        if (!pdef->hasSolution()) return;
+        const std::vector<Pose2> poses = toPoses(*pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>());
+        addRunProperties(run.w, *pl, poses, props);
+        const std::string key = expName + "|" + pl->getName();
+        if (!run.pathsJson.contains(key) && !pdef->hasApproximateSolution())
+        {
+            nlohmann::json pts = nlohmann::json::array();
+            for (const Pose2 &pp : poses) pts.push_back({pp.x, pp.y});
+            run.pathsJson[key] = pts;
+        }
+    });
+    ompl::tools::Benchmark::Request req(p.timeLimit, p.memoryMb, p.runs, 0.5, false, false, /*simplify=*/false);
+    b.benchmark(req);
+    const std::string log = (fs::path(run.o.outDir) / (expName + run.tag + ".log")).string();
+    if (!b.saveResultsToFile(log.c_str())) throw std::runtime_error("cannot write " + log);
+    run.logs.push_back(log);
+    drawQuery(run.w, run.o.outDir, expName, run.tag, start, goal, run.pathsJson);
+}
+
+/// The SQLite database of the logs (ompl_benchmark_statistics), then report.md and the plots.
+void writeReport(const Problem &p, const BenchOptions &o, const std::vector<std::string> &logs, const fs::path &pathsFile,
+                 const std::string &script)
+{
+    std::error_code ec;
+    const fs::path db = fs::path(o.outDir) / (p.name + ".db");
+    fs::remove(db, ec);
+    std::string cmd = "ompl_benchmark_statistics -d '" + db.string() + "'";
+    for (const auto &l : logs) cmd += " '" + l + "'";
+    cmd += " > '" + (fs::path(o.outDir) / "ompl_benchmark_statistics.out").string() + "' 2>&1";
+    std::fprintf(stderr, "[bench] %s: building %s with ompl_benchmark_statistics\n", p.name.c_str(), db.string().c_str());
+    if (std::system(cmd.c_str()) != 0)
+        throw std::runtime_error("ompl_benchmark_statistics failed (is Debian's ompl-demos installed? see " +
+                                 (fs::path(o.outDir) / "ompl_benchmark_statistics.out").string() + ")");
+    cmd = "/usr/bin/python3 '" + script + "' --db '" + db.string() + "' --paths '" + pathsFile.string() + "' --out '" +
+          o.outDir + "' --title '" + p.name + "'";
+    std::fprintf(stderr, "[bench] %s: report and plots\n", p.name.c_str());
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("the report script failed: " + cmd);
+    std::fprintf(stderr, "[bench] %s: done: %s/report.md\n", p.name.c_str(), o.outDir.c_str());
+}
+}  // namespace
+
+int runBench(const BenchOptions &o)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    unsigned shardK, shardN;
+    if (!parseShard(o.shard, shardK, shardN)) throw InputError("--shard must be K/N with 1 <= K <= N, got '" + o.shard + "'");
+    bool skip = false;
+    std::string skipWhy;
+    Problem p = readProblem(o.problem, o.sharedDir, skip, skipWhy);
+    if (skip)
+    {
+        std::fprintf(stderr, "[bench] %s: skipped: %s\n", o.problem.c_str(), skipWhy.c_str());
+        return 0;
+    }
+    if (o.timeLimit > 0) p.timeLimit = o.timeLimit;
+    if (o.runs > 0) p.runs = o.runs;
+    const std::string script = o.reportScript.empty() ? defaultReportScript() : o.reportScript;
+    if (!o.noDatabase && shardN == 1 && !fs::is_regular_file(script))  // fail before the runs, not after
+        throw InputError("report script '" + script +
+                         "' not found (give one with --report-script, or write only the logs with --no-database)");
+    std::error_code ec;
+    fs::create_directories(o.outDir, ec);
+    if (ec) throw InputError("cannot create output folder '" + o.outDir + "': " + ec.message());
+    BenchWorld world = loadWorld(p);
+
+    // units of work: (query, planner); shard K of N takes every N-th
+    BenchRun run(p, world, o, shardN > 1 ? "-shard" + std::to_string(shardK) + "of" + std::to_string(shardN) : "");
+    run.mine.resize(p.queries.size());
+    std::size_t unit = 0;
+    for (std::size_t q = 0; q < p.queries.size(); ++q)
+        for (std::size_t k = 0; k < p.planners.size(); ++k, ++unit)
+            if (unit % shardN == shardK - 1)
+            {
+                run.mine[q].push_back(k);
+                ++run.total;
+            }
+    for (std::size_t qi = 0; qi < p.queries.size(); ++qi)
+        if (!run.mine[qi].empty()) benchmarkQuery(run, qi);
+    const fs::path pathsFile = fs::path(o.outDir) / (p.name + run.tag + "-paths.json");
+    std::ofstream(pathsFile) << run.pathsJson.dump() << "\n";
+    const double el = std::chrono::duration<double>(Clock::now() - run.t0).count();
+    std::fprintf(stderr, "[bench] %s: %zu logs written in %.0f s\n", p.name.c_str(), run.logs.size(), el);
+    if (shardN > 1)
+        std::fprintf(stderr, "[bench] shard %u/%u done; merge the shards' .log files with ompl_benchmark_statistics "
+                             "(see docs/benchmark.md)\n", shardK, shardN);
+    if (o.noDatabase || shardN > 1) return 0;
+    writeReport(p, o, run.logs, pathsFile, script);
+    return 0;
+}
+
+std::string defaultReportScript()
+{
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec)
+    {
+        const fs::path installed = (exe.parent_path() / GRIDCAR_INSTALLED_REPORT_SCRIPT).lexically_normal();
+        if (fs::is_regular_file(installed, ec)) return installed.string();
+    }
+    return GRIDCAR_REPORT_SCRIPT;
+}
+
+}  // namespace gridcar::bench

@@ -1,0 +1,160 @@
+#pragma once
+/// @file GridPlanner.h
+/// @brief Common OMPL plumbing of the grid A* planners (one search core, see SearchCore.h).
+
+#include "gridcar/collision/FootprintChecker.h"
+#include "gridcar/planners/search/AStar.h"
+#include "gridcar/spaces/GridSE2StateSpace.h"
+#include "gridcar/spaces/Lattice.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/goals/GoalRegion.h>
+
+#include <ompl/geometric/PathGeometric.h>
+
+#include <array>
+#include <functional>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace gridcar
+{
+/// Row-major index of a map cell and back: the cell part of every grid planner's search state
+/// (32 bits: the dense lattices of the grid planners).
+struct CellIndex
+{
+    std::uint32_t width;
+    std::uint32_t of(int col, int row) const { return std::uint32_t(row) * width + std::uint32_t(col); }
+    void split(std::uint32_t index, int &col, int &row) const
+    {
+        col = int(index % width);
+        row = int(index / width);
+    }
+};
+
+/**
+ * @brief Base of the grid planners: an ompl::base::Planner over a GridSE2StateSpace.
+ *
+ * Handles what every grid planner shares: start / goal to lattice conversion, INVALID_START /
+ * INVALID_GOAL (off the map or in collision), the termination condition (polled every 256
+ * expansions), exact and approximate solutions (the expanded state closest to the goal by the
+ * heuristic), PlannerData of the explored graph, the progress property "expanded nodes
+ * INTEGER", and cached move validity: a move from a cell in one of 8 directions is valid when
+ * the target is on the map, for a diagonal both side cells are free unless corner cutting is
+ * allowed (parameter `allow_corner_cutting`, default false: the Moving AI rule), and the
+ * vehicle footprint at the move's heading is free along the swept motion
+ * (FootprintChecker::isMotionValid, both end poses included). With a validity checker that is
+ * not gridcar's, SpaceInformation::isValid / checkMotion are used instead.
+ *
+ * Start: the start state's cell and yaw (nearest of 8 directions), or a free heading with
+ * `free_start_heading` = true. Goals: a GoalState (its cell; its heading only if
+ * `match_goal_heading` is true), or any
+ * other GoalRegion, tested with isSatisfied() on the cell centre when a state is expanded.
+ */
+class GridPlanner : public ompl::base::Planner
+{
+public:
+    GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name);
+    ~GridPlanner() override;
+
+    void setup() override;
+    void clear() override;
+    ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+    void getPlannerData(ompl::base::PlannerData &data) const override;
+
+    bool allowCornerCutting() const { return allowCornerCutting_; }
+    void setAllowCornerCutting(bool v);
+    bool matchGoalHeading() const { return matchGoalHeading_; }
+    /// When true the start state's yaw is ignored (any first move costs no corner).
+    bool freeStartHeading() const { return freeStartHeading_; }
+    void setFreeStartHeading(bool v) { freeStartHeading_ = v; }
+    void setMatchGoalHeading(bool v) { matchGoalHeading_ = v; }
+
+    /// Statistics of the last solve().
+    std::uint64_t expandedNodes() const { return lastExpanded_; }
+    /// The planner's own search cost of the last solution (metres, incl. any penalties).
+    double lastCost() const { return lastCost_; }
+    /// Seconds spent in the search loop itself by the last solve() (no path building).
+    double lastSearchSeconds() const { return lastSearchSeconds_; }
+
+    /// The query in lattice terms.
+    struct Query
+    {
+        int startCol{0}, startRow{0};
+        int startDir{-1};  ///< -1: free start heading
+        bool goalIsState{false};
+        int goalCol{0}, goalRow{0};
+        int goalDir{-1};  ///< -1: any heading
+    };
+
+
+    // Queries the expanders of the search core use (valid after setup()).
+    /// True if the cell (with arrival direction @p dir, -1 = none) satisfies the goal.
+    bool isGoal(int col, int row, int dir) const;
+    /// Cached validity of the move from (col, row) in direction d (see the class comment).
+    bool moveValid(int col, int row, int d) const
+    {
+        const std::uint8_t c = moveCache_[(std::size_t(row) * std::size_t(width_) + std::size_t(col)) * 8 + std::size_t(d)];
+        if (c != 0) return c == 1;
+        return fillMoveCache(col, row, d);
+    }
+    /// Step length of direction d in metres (resolution or resolution * sqrt 2).
+    double stepLength(int d) const { return (d & 1) ? diagStep_ : straightStep_; }
+    /// The cell indexing of this map (after setup()).
+    CellIndex cellIndex() const { return {std::uint32_t(width_)}; }
+    /// Octile distance in metres between two cells (admissible for 8-connected moves).
+    double octile(int c0, int r0, int c1, int r1) const;
+
+protected:
+    /// Number of search states (cells x headings the planner distinguishes).
+    virtual std::size_t stateCount() const = 0;
+    /// The search states a query starts from.
+    virtual std::vector<std::uint32_t> startStates(const Query &q) const = 0;
+    /// Runs the search (through gridcar::astar) for the query.
+    virtual SearchResult runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
+                                   const ompl::base::PlannerTerminationCondition &ptc) = 0;
+    /// Cell (and arrival direction, -1 if the state has none) of a search state.
+    virtual void decode(std::uint32_t s, int &col, int &row, int &dir) const = 0;
+    /// True if the planner searches the dense SearchSpace `search_` (allocated by setup());
+    /// a planner with its own search space returns false and overrides the three below.
+    virtual bool usesDenseSearch() const { return true; }
+    /// Parent and g of a state of the last search.
+    virtual std::uint32_t parentOf(std::uint32_t s) const { return search_->parent(s); }
+    virtual double gOf(std::uint32_t s) const { return search_->g(s); }
+    /// Calls fn(s) for every state the last search expanded.
+    virtual void forEachClosed(const std::function<void(std::uint32_t)> &fn) const;
+    /// Hook for a planner that post-processes its lattice path (default: none). Returns true
+    /// when it replaced @p path.
+    virtual bool postProcess(ompl::geometric::PathGeometric &path) { (void)path; return false; }
+
+
+    std::shared_ptr<GridSE2StateSpace> space_;
+    const FootprintChecker *checker_{nullptr};  ///< null when the validity checker is not ours
+    int width_{0}, height_{0};
+    double straightStep_{1.0}, diagStep_{1.4142135623730951};
+    Query query_;
+    std::unique_ptr<SearchSpace> search_;
+    std::uint64_t progressExpanded_{0};
+
+private:
+    bool checkMoveUncached(int col, int row, int d) const;
+    bool fillMoveCache(int col, int row, int d) const;
+    bool poseValid(double x, double y, double yaw) const;
+
+    bool allowCornerCutting_{false};
+    bool matchGoalHeading_{false};
+    bool freeStartHeading_{false};
+    const ompl::base::GoalRegion *goalRegion_{nullptr};
+    mutable std::vector<std::uint8_t> moveCache_;  ///< per (cell, d): 0 unknown, 1 valid, 2 invalid
+    std::uint64_t lastExpanded_{0};
+    double lastCost_{0.0};
+    double lastSearchSeconds_{0.0};
+    std::vector<std::uint32_t> lastPath_;
+    ompl::base::State *scratchA_{nullptr}, *scratchB_{nullptr};
+    void freeDataStates();
+    mutable std::unordered_map<std::uint32_t, ompl::base::State *> dataStates_;  ///< for getPlannerData()
+};
+
+}  // namespace gridcar

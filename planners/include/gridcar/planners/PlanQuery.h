@@ -1,0 +1,74 @@
+#pragma once
+/// @file PlanQuery.h
+/// @brief The query pipeline for any planner, ours or OMPL's: configure it by name (parameters,
+/// free start heading, paper I's smoothing), plan start -> goal, and measure the result. The
+/// `gridcar` program's plan / drive commands and the benchmark harness all go through it.
+
+#include "gridcar/path/PathMetrics.h"
+#include "gridcar/path/PostProcess.h"
+#include "gridcar/spaces/Setup.h"
+
+#include <ompl/base/Planner.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gridcar
+{
+/// Planner parameters as NAME, VALUE pairs (OMPL's ParamSet takes strings).
+using PlannerParams = std::vector<std::pair<std::string, std::string>>;
+
+/// "NAME=VALUE" strings (as `--param` gives them) to pairs; InputError on a malformed one.
+PlannerParams parsePlannerParams(const std::vector<std::string> &settings);
+
+/// How to build a planner for a query.
+struct PlannerConfig
+{
+    std::string name;           ///< a makePlanner() name, optionally with "+smooth"
+    PlannerParams params;       ///< declared parameters to set
+    bool freeStartHeading{false};  ///< grid planners choose their first heading (no start yaw given)
+    bool smooth{false};         ///< add paper I's post-processing unless the planner smooths itself
+};
+
+/**
+ * @brief makePlanner() by name, then: `free_start_heading` where the planner has it (OMPL's
+ * planners have no such parameter and start at the start state's yaw), the parameters (an
+ * unknown name lists the planner's parameters; a rejected value says why: both InputError), and
+ * with `smooth` a SmoothedPlanner around it unless it smooths its own paths already
+ * (improved-astar with smooth = 1, or a name ending in "+smooth").
+ */
+ompl::base::PlannerPtr configurePlanner(const ompl::base::SpaceInformationPtr &si, const PlannerConfig &config);
+
+/// A planner's progress property as a number (0 when it has none): "expanded nodes INTEGER",
+/// "search cost REAL", ...
+double progressValue(const ompl::base::Planner &planner, const std::string &property);
+
+/// One planning query and everything reported about it.
+struct QueryResult
+{
+    ompl::base::PlannerStatus status;
+    double seconds{0.0};           ///< wall time of solve(), smoothing included
+    double smoothingSeconds{0.0};  ///< of that, post-processing
+    std::vector<Pose2> path;       ///< the reported path (smoothed where smoothing ran)
+    std::vector<Pose2> rawPath;    ///< before smoothing (the lattice path for grid planners)
+    PathMetrics metrics;           ///< of `path`
+    /// Largest heading change at a turning point: of `path`, or where smoothing ran, of the
+    /// turning points the Bezier pieces were built on (paper I's measure for its smoothed paths)
+    double maxTurnDeg{0.0};
+    std::uint64_t expanded{0};     ///< the planner's "expanded nodes" (0 for OMPL's planners)
+    double cost{0.0};              ///< the grid planner's search cost, else the path length
+    bool smoothed{false};
+    int adjustFailures{0}, bezierFallbacks{0};
+};
+
+/// Solves start -> goal with @p planner on @p setup within @p timeLimit seconds (start / goal
+/// must be valid: the caller checks) and measures the path (computePathMetrics()).
+QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &start, const Pose2 &goal,
+                     double timeLimit);
+
+/// Cells of the states @p planner explored in its last solve() (its PlannerData vertices).
+std::vector<Cell> exploredCells(const ompl::base::Planner &planner, const OccupancyGrid &grid);
+
+}  // namespace gridcar

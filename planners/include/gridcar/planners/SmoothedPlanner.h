@@ -1,0 +1,58 @@
+#pragma once
+/// @file SmoothedPlanner.h
+/// @brief Paper I's post-processing (smoothPath()) of an OMPL solution path: one function that
+/// every route to smoothing uses, the report a smoothing planner gives, and a wrapper that adds
+/// it to any OMPL planner.
+
+#include "gridcar/path/PostProcess.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include <vector>
+
+namespace gridcar
+{
+/// What a planner that smooths its own solution reports about the last solve().
+class SmoothingReport
+{
+public:
+    virtual ~SmoothingReport() = default;
+    /// The post-processing of the last solve() (empty path when nothing was smoothed).
+    virtual const SmoothingResult &lastSmoothing() const = 0;
+    /// The path before smoothing (world poses; empty when nothing was smoothed).
+    virtual const std::vector<Pose2> &lastRawPath() const = 0;
+};
+
+/// Replaces @p path (at least 3 states) by smoothPath() of it, collision-checked with
+/// @p checker; @p raw receives the poses before smoothing. Returns the smoothing report.
+SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, const FootprintChecker &checker,
+                                   ompl::geometric::PathGeometric &path, std::vector<Pose2> &raw);
+
+/**
+ * @brief Wraps a planner: solve() runs it, then replaces its solution path by smoothPath() of
+ * it (line of sight, turning-point adjustment under K_max, Bezier; collision-checked with the
+ * footprint checker). The time limit covers both. Name: "<inner name>+smooth". Parameters and
+ * progress properties are the inner planner's (forwarded). Needs gridcar's
+ * FootprintValidityChecker on the space information (ompl::Exception in setup() otherwise).
+ */
+class SmoothedPlanner : public ompl::base::Planner, public SmoothingReport
+{
+public:
+    explicit SmoothedPlanner(ompl::base::PlannerPtr inner);
+    void setProblemDefinition(const ompl::base::ProblemDefinitionPtr &pdef) override;
+    void setup() override;
+    void clear() override;
+    void checkValidity() override;
+    ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+    void getPlannerData(ompl::base::PlannerData &data) const override;
+    const ompl::base::PlannerPtr &inner() const { return inner_; }
+    const SmoothingResult &lastSmoothing() const override { return last_; }
+    const std::vector<Pose2> &lastRawPath() const override { return raw_; }
+
+private:
+    ompl::base::PlannerPtr inner_;
+    SmoothingResult last_;
+    std::vector<Pose2> raw_;
+};
+}  // namespace gridcar

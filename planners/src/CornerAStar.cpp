@@ -1,0 +1,133 @@
+#include "gridcar/planners/CornerAStar.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace gridcar
+{
+namespace
+{
+/// A corner A* search state: cell index * 8 + arrival direction.
+struct CornerState
+{
+    CellIndex cells;
+    std::uint32_t encode(int c, int r, int d) const { return cells.of(c, r) * 8 + std::uint32_t(d); }
+    void decode(std::uint32_t s, int &c, int &r, int &d) const
+    {
+        d = int(s % 8);
+        cells.split(s / 8, c, r);
+    }
+};
+}  // namespace
+
+/// Successors of corner-weighted A*: a move in any direction but a reversal, costing its
+/// length plus the corner weight of the heading change.
+struct CornerExpander
+{
+    const GridPlanner *self;
+    const GridPlanner::Query &q;
+    const double *turnCost;
+    CornerState states;
+    double heuristic(std::uint32_t s) const
+    {
+        if (!q.goalIsState) return 0.0;
+        int c, r, d;
+        states.decode(s, c, r, d);
+        return self->octile(c, r, q.goalCol, q.goalRow);
+    }
+    bool isGoal(std::uint32_t s) const
+    {
+        int c, r, d;
+        states.decode(s, c, r, d);
+        return self->isGoal(c, r, d);
+    }
+    template <class Emit>
+    void successors(std::uint32_t s, Emit &&emit) const
+    {
+        int c, r, dir;
+        states.decode(s, c, r, dir);
+        for (int d = 0; d < 8; ++d)
+        {
+            const int t = Moves::turn(dir, d);
+            if (t == 4 || !self->moveValid(c, r, d)) continue;  // never a reversal
+            const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
+            emit(states.encode(nc, nr, d), self->stepLength(d) + turnCost[t],
+                 q.goalIsState ? self->octile(nc, nr, q.goalCol, q.goalRow) : 0.0);
+        }
+    }
+};
+
+CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanner(si, "corner-astar")
+{
+    weights_ = userWeights_;
+    declareParam<double>("corner_weight_45", this, &CornerAStar::setWeight45,
+                         &CornerAStar::weight45, "0.:0.1:50.");
+    declareParam<double>("corner_weight_90", this, &CornerAStar::setWeight90,
+                         &CornerAStar::weight90, "0.:0.1:100.");
+    declareParam<double>("corner_weight_135", this, &CornerAStar::setWeight135,
+                         &CornerAStar::weight135, "0.:0.1:200.");
+    declareParam<std::string>("weights", this, &CornerAStar::setWeightMode, &CornerAStar::weightMode, "paper,physics");
+}
+
+namespace
+{
+double checkedWeight(double w, const char *name)
+{
+    if (!std::isfinite(w) || w < 0.0)
+        throw std::invalid_argument(std::string("corner-astar: ") + name + " must be a finite number >= 0 (metres)");
+    return w;
+}
+}  // namespace
+
+void CornerAStar::setWeight45(double w) { userWeights_.w45 = weights_.w45 = checkedWeight(w, "corner_weight_45"); }
+void CornerAStar::setWeight90(double w) { userWeights_.w90 = weights_.w90 = checkedWeight(w, "corner_weight_90"); }
+void CornerAStar::setWeight135(double w) { userWeights_.w135 = weights_.w135 = checkedWeight(w, "corner_weight_135"); }
+
+void CornerAStar::setWeightMode(const std::string &mode)
+{
+    if (mode != "paper" && mode != "physics")
+        throw std::invalid_argument("corner-astar: weights must be 'paper' or 'physics', got '" + mode + "'");
+    physics_ = mode == "physics";
+    setup_ = false;
+}
+
+void CornerAStar::setup()
+{
+    GridPlanner::setup();
+    if (physics_)
+    {
+        if (!checker_)
+            throw ompl::Exception(getName(), "weights=physics needs gridcar's footprint validity checker (vehicle)");
+        weights_ = physicsCornerWeights(checker_->vehicle());
+    }
+    else
+        weights_ = userWeights_;
+}
+
+std::size_t CornerAStar::stateCount() const { return std::size_t(width_) * height_ * 8; }
+
+void CornerAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
+{
+    CornerState{cellIndex()}.decode(s, col, row, dir);
+}
+
+std::vector<std::uint32_t> CornerAStar::startStates(const Query &q) const
+{
+    const CornerState states{cellIndex()};
+    // the start state's yaw (nearest of 8 directions), or every direction at g = 0 when the
+    // start heading is free: the first move then costs no corner
+    if (q.startDir >= 0) return {states.encode(q.startCol, q.startRow, q.startDir)};
+    std::vector<std::uint32_t> all;
+    for (int d = 0; d < 8; ++d) all.push_back(states.encode(q.startCol, q.startRow, d));
+    return all;
+}
+
+SearchResult CornerAStar::runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
+                                    const ompl::base::PlannerTerminationCondition &ptc)
+{
+    const double turnCost[5] = {0.0, weights_.w45, weights_.w90, weights_.w135, 0.0};
+    CornerExpander ex{this, q, turnCost, CornerState{cellIndex()}};
+    return astar(*search_, starts, ex, [&] { return ptc.eval(); }, &progressExpanded_);
+}
+
+}  // namespace gridcar

@@ -1,0 +1,236 @@
+#include "gridcar/planners/ImprovedAStar.h"
+
+#include "gridcar/planners/SmoothedPlanner.h"
+#include "gridcar/spaces/OmplAdapters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gridcar
+{
+ImprovedAStar::ImprovedAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanner(si, "improved-astar")
+{
+    declareParam<std::string>("mode", this, &ImprovedAStar::setMode, &ImprovedAStar::mode, "paper,integral");
+    declareParam<std::string>("heuristic", this, &ImprovedAStar::setHeuristic, &ImprovedAStar::heuristic,
+                              "auto,arc,euclidean,octile");
+    declareParam<double>("delta", this, &ImprovedAStar::setDelta, &ImprovedAStar::delta, "0.:0.1:100.");
+    declareParam<std::string>("obstacle_cost", this, &ImprovedAStar::setObstacleCost, &ImprovedAStar::obstacleCost,
+                              "inverse,voronoi");
+    declareParam<std::string>("contour", this, &ImprovedAStar::setContour, &ImprovedAStar::contour, "fcl,points");
+    declareParam<bool>("smooth", this, &ImprovedAStar::setSmooth, &ImprovedAStar::smooth, "0,1");
+}
+
+namespace
+{
+std::string oneOf(const std::string &v, std::initializer_list<const char *> allowed, const char *param)
+{
+    std::string list;
+    for (const char *a : allowed)
+    {
+        if (v == a) return v;
+        list += (list.empty() ? "" : ", ") + std::string(a);
+    }
+    throw std::invalid_argument("improved-astar: " + std::string(param) + " must be one of " + list + ", got '" + v + "'");
+}
+}  // namespace
+
+void ImprovedAStar::setMode(const std::string &m)
+{
+    paperMode_ = oneOf(m, {"paper", "integral"}, "mode") == "paper";
+    setup_ = false;
+}
+void ImprovedAStar::setHeuristic(const std::string &h)
+{
+    heuristic_ = oneOf(h, {"auto", "arc", "euclidean", "octile"}, "heuristic");
+    setup_ = false;
+}
+void ImprovedAStar::setDelta(double d)
+{
+    if (!std::isfinite(d) || d < 0.0) throw std::invalid_argument("improved-astar: delta must be a finite number >= 0");
+    delta_ = d;
+}
+void ImprovedAStar::setObstacleCost(const std::string &c) { voronoi_ = oneOf(c, {"inverse", "voronoi"}, "obstacle_cost") == "voronoi"; }
+void ImprovedAStar::setContour(const std::string &c) { points_ = oneOf(c, {"fcl", "points"}, "contour") == "points"; }
+
+void ImprovedAStar::setup()
+{
+    GridPlanner::setup();
+    if (!checker_)
+        throw ompl::Exception(getName(), "needs gridcar's footprint validity checker (see gridcar::makeGridSetup)");
+    const VehicleParams &v = checker_->vehicle();
+    const double kmax = v.maxCurvature();
+    const double half = M_PI / 8;  // half of a 45-degree turn
+    const double lturn = std::isfinite(kmax) ? 2 * std::sin(half) / (kmax * std::cos(half) * std::cos(half)) : 0.0;
+    need_[0] = int(std::ceil(lturn / straightStep_ - 1e-9));
+    need_[1] = int(std::ceil(lturn / diagStep_ - 1e-9));
+    runStates_ = std::max(need_[0], need_[1]) + 1;
+    const double phi = v.maxSteerDeg * M_PI / 180.0;
+    arcFactor_ = phi > 1e-9 ? phi / std::sin(phi) : 1.0;
+    const std::string h = heuristic_ == "auto" ? (paperMode_ ? "arc" : "octile") : heuristic_;
+    hKind_ = h == "arc" ? 0 : h == "euclidean" ? 1 : 2;
+}
+
+void ImprovedAStar::clear()
+{
+    GridPlanner::clear();
+    hash_.reset();
+    ids_.clear();
+    keys_.clear();
+    lastSmoothing_ = SmoothingResult();
+    latticePath_.clear();
+}
+
+std::size_t ImprovedAStar::stateCount() const { return keys_.size(); }
+
+std::uint32_t ImprovedAStar::intern(std::uint64_t key) const
+{
+    auto it = ids_.find(key);
+    if (it != ids_.end()) return it->second;
+    if (keys_.size() >= std::size_t(SearchSpace::kNoParent) - 1)
+        throw ompl::Exception("improved-astar", "more than 2^32 - 2 search states");
+    const auto id = std::uint32_t(keys_.size());
+    ids_.emplace(key, id);
+    keys_.push_back(key);
+    return id;
+}
+
+ImprovedAStar::Key ImprovedAStar::keyCodec() const { return {std::uint64_t(width_), std::uint64_t(runStates_)}; }
+
+void ImprovedAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
+{
+    int k;
+    keyCodec().split(keyOf(s), col, row, dir, k);
+}
+
+double ImprovedAStar::obstacleCostAt(int col, int row) const
+{
+    const DistanceField &f = checker_->field();
+    if (voronoi_) return delta_ * f.voronoiField(space_->cellCenterX(col), space_->cellCenterY(row));
+    const double d = f.cellDistance(col, row);
+    return d > 0 ? delta_ / d : std::numeric_limits<double>::infinity();
+}
+
+double ImprovedAStar::heuristicAt(int col, int row, int goalCol, int goalRow) const
+{
+    const double dx = std::abs(goalCol - col), dy = std::abs(goalRow - row);
+    switch (hKind_)
+    {
+        case 0: return arcFactor_ * straightStep_ * std::hypot(dx, dy);
+        case 1: return straightStep_ * std::hypot(dx, dy);
+        default: return octile(col, row, goalCol, goalRow);
+    }
+}
+
+std::vector<std::uint32_t> ImprovedAStar::startStates(const Query &q) const
+{
+    ids_.clear();
+    keys_.clear();
+    const Key key = keyCodec();
+    std::vector<std::uint32_t> out;
+    for (int d = 0; d < 8; ++d)
+        if (q.startDir < 0 || d == q.startDir) out.push_back(intern(key.of(q.startCol, q.startRow, d, need_[d & 1] / 2)));
+    return out;
+}
+
+void ImprovedAStar::forEachClosed(const std::function<void(std::uint32_t)> &fn) const
+{
+    hash_.forEach([&](std::uint32_t s, bool closed) {
+        if (closed) fn(s);
+    });
+}
+
+/// Successors of improved A*: state = (cell * 8 + heading) * K + straight run.
+struct ImprovedExpander
+{
+    const ImprovedAStar *self;
+    const GridPlanner::Query &q;
+    ImprovedAStar::Key key;
+    int K;
+    void split(std::uint32_t s, int &c, int &r, int &dir, int &k) const { key.split(self->keyOf(s), c, r, dir, k); }
+    double hAt(int c, int r) const { return q.goalIsState ? self->heuristicAt(c, r, q.goalCol, q.goalRow) : 0.0; }
+    double heuristic(std::uint32_t s) const
+    {
+        int c, r, d, k;
+        split(s, c, r, d, k);
+        return hAt(c, r);
+    }
+    bool isGoal(std::uint32_t s) const
+    {
+        int c, r, d, k;
+        split(s, c, r, d, k);
+        const int need = self->need_[d & 1];
+        return k >= need - need / 2 && self->isGoal(c, r, d);
+    }
+    bool moveOk(int c, int r, int d) const
+    {
+        if (!self->points_) return self->moveValid(c, r, d);
+        const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
+        const OccupancyGrid &g = self->checker_->grid();
+        if (!g.inBounds(nc, nr) || g.isBlocked(nc, nr)) return false;
+        if ((d & 1) && !self->allowCornerCutting() && (g.isBlocked(nc, r) || g.isBlocked(c, nr))) return false;
+        return self->checker_->isValidDetectionPoints(g.cellCenterX(nc), g.cellCenterY(nr));
+    }
+    template <class Emit>
+    void successors(std::uint32_t s, Emit &&emit) const
+    {
+        int c, r, dir, k;
+        split(s, c, r, dir, k);
+        const bool mayTurn = k >= self->need_[dir & 1];
+        const double oHere = self->paperMode_ ? 0.0 : self->obstacleCostAt(c, r);
+        for (int dd : {0, 1, -1})
+        {
+            if (dd != 0 && !mayTurn) continue;
+            const int d = (dir + dd + 8) % 8;
+            if (!moveOk(c, r, d)) continue;
+            const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
+            const int nk = std::min(dd == 0 ? k + 1 : 1, K - 1);
+            const std::uint32_t next = self->intern(key.of(nc, nr, d, nk));
+            double cost = self->stepLength(d);
+            if (!self->paperMode_) cost *= 1.0 + 0.5 * (oHere + self->obstacleCostAt(nc, nr));
+            emit(next, cost, hAt(nc, nr));
+        }
+    }
+};
+
+namespace
+{
+/// Paper I's priority f = g' + h (1 + o) (s is the rejection of invalid successors).
+struct PaperExpander : ImprovedExpander
+{
+    double priority(double g, double h, std::uint32_t s) const
+    {
+        int c, r, d, k;
+        split(s, c, r, d, k);
+        return ImprovedAStar::paperPriority(g, h, self->obstacleCostAt(c, r));
+    }
+};
+}  // namespace
+
+SearchResult ImprovedAStar::runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
+                                      const ompl::base::PlannerTerminationCondition &ptc)
+{
+    latticePath_.clear();
+    lastSmoothing_ = SmoothingResult();
+    auto cancelled = [&] { return ptc.eval(); };
+    if (paperMode_)
+    {
+        PaperExpander ex{{this, q, keyCodec(), runStates_}};
+        return astar(hash_, starts, ex, cancelled, &progressExpanded_, /*reopen=*/false);
+    }
+    ImprovedExpander ex{this, q, keyCodec(), runStates_};
+    return astar(hash_, starts, ex, cancelled, &progressExpanded_);
+}
+
+bool ImprovedAStar::postProcess(ompl::geometric::PathGeometric &path)
+{
+    if (!smooth_ || path.getStateCount() < 3)
+    {
+        latticePath_ = toPoses(path);
+        return false;
+    }
+    lastSmoothing_ = smoothSolutionPath(si_, *checker_, path, latticePath_);
+    return true;
+}
+
+}  // namespace gridcar

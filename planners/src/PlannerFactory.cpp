@@ -1,0 +1,88 @@
+#include "gridcar/planners/PlannerFactory.h"
+
+#include "gridcar/planners/CornerAStar.h"
+#include "gridcar/planners/GridAStar.h"
+#include "gridcar/planners/ImprovedAStar.h"
+#include "gridcar/planners/SmoothedPlanner.h"
+
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/prm/LazyPRMstar.h>
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gridcar
+{
+std::vector<std::string> gridPlannerNames()
+{
+    return {"dijkstra", "astar-manhattan", "astar-euclidean", "astar-octile", "corner-astar", "improved-astar"};
+}
+
+std::vector<std::string> omplPlannerNames()
+{
+    return {"rrt", "rrtconnect", "rrtstar", "prm", "prmstar", "lazyprmstar", "bitstar", "informedrrtstar"};
+}
+
+std::vector<std::string> plannerNames()
+{
+    auto n = gridPlannerNames();
+    for (const auto &o : omplPlannerNames()) n.push_back(o);
+    return n;
+}
+
+namespace
+{
+/// True (and @p base set to NAME) if @p name is "NAME+smooth".
+bool splitSmooth(const std::string &name, std::string &base)
+{
+    const std::string suffix = "+smooth";
+    if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+    base = name.substr(0, name.size() - suffix.size());
+    return true;
+}
+}  // namespace
+
+bool isPlannerName(const std::string &name)
+{
+    std::string base = name;
+    splitSmooth(name, base);
+    const auto known = plannerNames();
+    return std::find(known.begin(), known.end(), base) != known.end();
+}
+
+ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name)
+{
+    namespace og = ompl::geometric;
+    if (std::string base; splitSmooth(name, base))
+    {
+        auto p = std::make_shared<SmoothedPlanner>(makePlanner(si, base));
+        p->setName(name);
+        return p;
+    }
+    if (name == "dijkstra") return std::make_shared<GridAStar>(si, GridHeuristic::Zero, name);
+    if (name == "astar-manhattan") return std::make_shared<GridAStar>(si, GridHeuristic::Manhattan, name);
+    if (name == "astar-euclidean") return std::make_shared<GridAStar>(si, GridHeuristic::Euclidean, name);
+    if (name == "astar-octile") return std::make_shared<GridAStar>(si, GridHeuristic::Octile, name);
+    if (name == "corner-astar") return std::make_shared<CornerAStar>(si);
+    if (name == "improved-astar") return std::make_shared<ImprovedAStar>(si);
+    if (name == "rrt") return std::make_shared<og::RRT>(si);
+    if (name == "rrtconnect") return std::make_shared<og::RRTConnect>(si);
+    if (name == "rrtstar") return std::make_shared<og::RRTstar>(si);
+    if (name == "prm") return std::make_shared<og::PRM>(si);
+    if (name == "prmstar") return std::make_shared<og::PRMstar>(si);
+    if (name == "lazyprmstar") return std::make_shared<og::LazyPRMstar>(si);
+    if (name == "bitstar") return std::make_shared<og::BITstar>(si);
+    if (name == "informedrrtstar") return std::make_shared<og::InformedRRTstar>(si);
+    std::string known;
+    for (const auto &n : plannerNames()) known += (known.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("unknown planner '" + name + "' (known: " + known +
+                                "; any of them + \"+smooth\" adds paper I's post-processing)");
+}
+
+}  // namespace gridcar

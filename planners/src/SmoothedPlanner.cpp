@@ -1,0 +1,75 @@
+#include "gridcar/planners/SmoothedPlanner.h"
+
+#include "gridcar/spaces/OmplAdapters.h"
+
+#include <ompl/base/goals/GoalRegion.h>
+#include <ompl/geometric/PathGeometric.h>
+
+namespace gridcar
+{
+SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, const FootprintChecker &checker,
+                                   ompl::geometric::PathGeometric &path, std::vector<Pose2> &raw)
+{
+    raw = toPoses(path);
+    SmoothingResult res = smoothPath(raw, checker);
+    path = toPath(si, res.path);
+    return res;
+}
+
+SmoothedPlanner::SmoothedPlanner(ompl::base::PlannerPtr inner)
+  : ompl::base::Planner(inner->getSpaceInformation(), inner->getName() + "+smooth"), inner_(std::move(inner))
+{
+    specs_ = inner_->getSpecs();
+    params_ = inner_->params();  // copies hold the inner planner's setter / getter functions
+    for (const auto &kv : inner_->getPlannerProgressProperties()) addPlannerProgressProperty(kv.first, kv.second);
+}
+
+void SmoothedPlanner::setProblemDefinition(const ompl::base::ProblemDefinitionPtr &pdef)
+{
+    ompl::base::Planner::setProblemDefinition(pdef);
+    inner_->setProblemDefinition(pdef);
+}
+
+void SmoothedPlanner::setup()
+{
+    ompl::base::Planner::setup();
+    if (!std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker()))
+        throw ompl::Exception(getName(), "needs gridcar's footprint validity checker (see gridcar::makeGridSetup)");
+    inner_->setup();
+}
+
+void SmoothedPlanner::checkValidity()
+{
+    ompl::base::Planner::checkValidity();
+    inner_->checkValidity();
+}
+
+void SmoothedPlanner::clear()
+{
+    ompl::base::Planner::clear();
+    inner_->clear();
+    last_ = SmoothingResult();
+}
+
+ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTerminationCondition &ptc)
+{
+    last_ = SmoothingResult();
+    raw_.clear();
+    const ompl::base::PlannerStatus st = inner_->solve(ptc);
+    const auto &pdef = getProblemDefinition();
+    if (!pdef->hasSolution()) return st;
+    auto *path = pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
+    if (!path || path->getStateCount() < 3) return st;
+    auto vc = std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker());
+    auto out = std::make_shared<ompl::geometric::PathGeometric>(*path);
+    last_ = smoothSolutionPath(si_, vc->checker(), *out, raw_);
+    const bool approximate = pdef->hasApproximateSolution();
+    const double difference = pdef->getSolutionDifference();
+    pdef->clearSolutionPaths();
+    pdef->addSolutionPath(out, approximate, difference, getName());
+    return st;
+}
+
+void SmoothedPlanner::getPlannerData(ompl::base::PlannerData &data) const { inner_->getPlannerData(data); }
+
+}  // namespace gridcar

@@ -1,0 +1,86 @@
+#pragma once
+// The gridcar program's commands: each add*Command() registers one subcommand with its options
+// and returns how to run it. Shared option groups (map, vehicle, time limit, a planning query)
+// are declared once, here.
+#include "gridcar/core/Errors.h"
+#include "gridcar/spaces/Setup.h"
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gridcar::cli
+{
+/// A registered subcommand and what runs it (returns the exit status).
+struct Command
+{
+    CLI::App *app;
+    std::function<int()> run;
+};
+
+Command addInfoCommand(CLI::App &app);
+Command addGenmapCommand(CLI::App &app);
+Command addDemoCommand(CLI::App &app);
+Command addVehicleCommand(CLI::App &app);
+Command addPlanCommand(CLI::App &app);
+Command addScenCommand(CLI::App &app);
+Command addDriveCommand(CLI::App &app);
+Command addBenchCommand(CLI::App &app);
+Command addPaperICommand(CLI::App &app);
+Command addPaperCCommand(CLI::App &app);
+
+// ------------------------------------------------------------------ shared option groups
+/// `--vehicle NAME|FILE` (default paper-i).
+void addVehicleOption(CLI::App *cmd, std::string &vehicle);
+/// `--time-limit S`.
+void addTimeLimitOption(CLI::App *cmd, double &seconds, const std::string &what);
+
+/// A planning query as `plan` and `drive` take it.
+struct QueryArgs
+{
+    std::string map;
+    bool unknownFree{false};
+    std::string planner;
+    std::string start, startCell, goal, goalCell;
+    std::string vehicle{"paper-i"};
+    std::vector<std::string> params;
+    double timeLimit{10.0};
+    bool smooth{false};
+};
+/// --map, --unknown-free, --planner (required or not), --start / --start-cell, --goal /
+/// --goal-cell, --vehicle, --param, --time-limit, --smooth.
+void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired);
+
+/// A query made concrete: the map, the vehicle, the setup and the poses.
+struct Query
+{
+    std::shared_ptr<OccupancyGrid> grid;
+    VehicleParams vehicle;
+    GridSetup setup;
+    Pose2 start, goal;
+    bool startYaw{false};
+};
+/// Loads the map and the vehicle, reads start and goal (with @p withPoses; InputError on
+/// malformed ones) and builds the setup.
+Query loadQuery(const QueryArgs &q, bool withPoses);
+/// "" if the vehicle fits at @p p, else why not ("outside the map", "in collision for vehicle X").
+std::string whyInvalid(const Query &query, const Pose2 &p);
+/// The planner of the query: configurePlanner() with the free start heading when no start yaw
+/// was given, the --param settings and --smooth.
+ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query);
+
+// ------------------------------------------------------------------ parsing helpers
+/// "A,B[,C]" -> numbers; throws InputError naming the option.
+std::vector<double> parseNumbers(const std::string &text, const std::string &option, std::size_t minN, std::size_t maxN);
+/// A pose from --X (world X,Y[,YAW_DEG]) or --X-cell (COL,ROW[,DEG]); exactly one must be given.
+Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,
+                bool &hasYaw);
+/// "(x, y, yaw deg)".
+std::string describe(const Pose2 &p);
+/// Creates a folder (and its parents); InputError saying why not.
+void ensureDir(const std::string &dir);
+
+}  // namespace gridcar::cli

@@ -1,0 +1,209 @@
+// gridcar drive: plan a path (or read one), then drive it with paper C's potential-field
+// follower in the kinematic simulation, with optional moving obstacles.
+#include "Cli.h"
+
+#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/render/Render.h"
+#include "gridcar/sim/Simulation.h"
+#include "gridcar/vehicle/Dynamics.h"
+
+#include <ompl/util/Console.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace gridcar::cli
+{
+namespace
+{
+struct DriveOptions
+{
+    QueryArgs query;           ///< map, planner, start / goal, vehicle, params, time limit, smooth
+    std::string pathCsv;       ///< drive this path (x,y[,yaw] CSV) instead of planning
+    std::string scenario;      ///< moving obstacles (YAML)
+    double dt{0.05};
+    double xi{1.0}, eta{0.6}, rho0{1.5};  ///< potential-field gains (FollowerParams)
+    bool json{false};
+    std::string png;
+    std::string trajectoryCsv;
+};
+
+/// x,y[,yaw] rows after a header line; InputError naming the file and line.
+std::vector<Pose2> readPathCsv(const std::string &file)
+{
+    std::ifstream f(file);
+    if (!f) throw InputError(file + ": cannot open the path file");
+    std::vector<Pose2> path;
+    std::string line;
+    int n = 0;
+    while (std::getline(f, line))
+    {
+        ++n;
+        if (line.empty() || (n == 1 && line.find_first_of("0123456789") != 0 && line[0] != '-')) continue;
+        std::stringstream ss(line);
+        std::string item;
+        std::vector<double> v;
+        while (std::getline(ss, item, ','))
+        {
+            try
+            {
+                std::size_t used = 0;
+                v.push_back(std::stod(item, &used));
+            }
+            catch (const std::exception &)
+            {
+                throw InputError(file + ": line " + std::to_string(n) + ": '" + item + "' is not a number");
+            }
+        }
+        if (v.size() < 2 || v.size() > 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]))
+            throw InputError(file + ": line " + std::to_string(n) + ": expected x,y[,yaw] (finite numbers)");
+        path.push_back({v[0], v[1], v.size() == 3 ? v[2] : 0.0});
+    }
+    if (path.size() < 2) throw InputError(file + ": a path needs at least two points");
+    return path;
+}
+
+/// A picture of the path, the trajectory and the moving obstacles (their routes and where
+/// they were every 10 s), cropped to what was driven.
+void drawDrive(const OccupancyGrid &grid, const std::vector<Pose2> &path, const DriveResult &r, const Scenario &sc,
+               const std::string &png)
+{
+    WorldBox box;
+    box.add(path);
+    for (const TrajectorySample &q : r.trajectory) box.add(q.x, q.y);
+    const OccupancyGrid crop = cropAround(grid, box, 8.0);
+    MapCanvas canvas(crop, 1200);
+    for (const MovingObstacle &o : sc.obstacles)
+    {
+        canvas.polyline(o.waypoints, {230, 150, 40}, 1);
+        for (double t = 0; !r.trajectory.empty() && t <= r.trajectory.back().t; t += 10.0)
+        {
+            double ox, oy;
+            o.positionAt(t, ox, oy);
+            canvas.disc(ox, oy, 4, {230, 150, 40});
+        }
+    }
+    std::vector<std::pair<double, double>> tp;
+    for (const TrajectorySample &q : r.trajectory) tp.push_back({q.x, q.y});
+    canvas.polyline(path, {40, 80, 220}, 2);
+    canvas.polyline(tp, {220, 30, 30}, 1);
+    if (!tp.empty()) canvas.disc(tp.back().first, tp.back().second, 5, {220, 30, 30});
+    canvas.disc(path.front().x, path.front().y, 5, {0, 0, 0});
+    canvas.save(png);
+}
+
+nlohmann::json driveJson(const DriveResult &r)
+{
+    return {{"outcome", DriveResult::outcomeName(r.outcome)},
+            {"reason", r.reason},
+            {"driving_time", r.drivingTime},
+            {"path_length", r.pathLength},
+            {"distance_driven", r.distanceDriven},
+            {"cross_track_mean", r.crossTrackMean},
+            {"cross_track_max", r.crossTrackMax},
+            {"min_clearance", r.minClearance},
+            {"recoveries", r.recoveries}};
+}
+/// The path to drive: planned (false when the planner found no exact solution) or read.
+bool pathToDrive(const DriveOptions &o, Query &query, std::vector<Pose2> &path, nlohmann::json &j)
+{
+    if (!o.pathCsv.empty())
+    {
+        path = readPathCsv(o.pathCsv);
+        if (!query.setup.checker->isValid(path.front()))
+            throw InputError(o.pathCsv + ": the path starts " + describe(path.front()) + " off the map or in collision");
+        j["plan"] = {{"path_file", o.pathCsv}};
+        return true;
+    }
+    const QueryArgs &p = o.query;
+    for (const auto &[what, pose] : {std::make_pair(std::string("start"), query.start), std::make_pair(std::string("goal"), query.goal)})
+        if (const std::string why = whyInvalid(query, pose); !why.empty())
+            throw InputError(what + " " + describe(pose) + " is " + why);
+    const QueryResult q = runQuery(query.setup, queryPlanner(p, query), query.start, query.goal, p.timeLimit);
+    j["plan"] = {{"planner", p.planner},         {"status", q.status.asString()}, {"cost", q.cost},
+                 {"length", q.metrics.length},   {"expanded", q.expanded},        {"turns", q.metrics.turns},
+                 {"max_turn_deg", q.maxTurnDeg}, {"time", q.seconds},             {"min_clearance", q.metrics.minClearance},
+                 {"driving_time_profile", drivingTime(q.path, query.vehicle)}};
+    if (q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
+    {
+        std::fprintf(stderr, "%s: %s, nothing to drive\n", p.planner.c_str(), q.status.asString().c_str());
+        return false;
+    }
+    path = q.path;
+    return true;
+}
+
+int runDrive(const DriveOptions &o)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    if (!(o.dt > 0) || o.dt > 1.0) throw InputError("--dt must be in (0, 1] s");
+    if (!(o.xi >= 0) || !(o.eta >= 0) || !(o.rho0 > 0) || !std::isfinite(o.xi + o.eta + o.rho0))
+        throw InputError("--xi and --eta must be >= 0 and --rho0 > 0 (finite)");
+    if (o.pathCsv.empty() && o.query.planner.empty()) throw InputError("give --planner NAME (with --start / --goal) or --path path.csv");
+    Query query = loadQuery(o.query, o.pathCsv.empty());
+    Scenario sc;
+    if (!o.scenario.empty()) sc = Scenario::load(o.scenario);
+    nlohmann::json j;
+    std::vector<Pose2> path;
+    if (!pathToDrive(o, query, path, j))
+    {
+        j["outcome"] = "no plan";
+        if (o.json) std::cout << j.dump() << "\n";
+        return 3;
+    }
+    FollowerParams fp;
+    fp.dt = o.dt;
+    fp.xi = o.xi;
+    fp.eta = o.eta;
+    fp.rho0 = o.rho0;
+    const DriveResult r = drivePath(path, *query.setup.checker, sc, fp);
+    const nlohmann::json dj = driveJson(r);  // (items() of a temporary would dangle)
+    for (const auto &kv : dj.items()) j[kv.key()] = kv.value();
+    if (o.json)
+        std::cout << j.dump() << "\n";
+    else
+        std::printf("%s: %s in %.2f s of driving (%.1f m path, %.1f m driven), cross-track mean %.2f m / max %.2f m, "
+                    "min clearance %.2f m, %d recoveries\n",
+                    DriveResult::outcomeName(r.outcome).c_str(), r.reason.c_str(), r.drivingTime, r.pathLength,
+                    r.distanceDriven, r.crossTrackMean, r.crossTrackMax, r.minClearance, r.recoveries);
+    if (!o.trajectoryCsv.empty())
+    {
+        std::ofstream f(o.trajectoryCsv);
+        if (!f) throw InputError("cannot write " + o.trajectoryCsv);
+        f << "t,x,y,yaw,v,steer\n";
+        f.precision(10);
+        for (const TrajectorySample &q : r.trajectory) f << q.t << "," << q.x << "," << q.y << "," << q.yaw << "," << q.v << "," << q.steer << "\n";
+    }
+    if (!o.png.empty()) drawDrive(*query.grid, path, r, sc, o.png);
+    return r.outcome == DriveResult::Outcome::Reached ? 0 : 3;
+}
+}  // namespace
+
+Command addDriveCommand(CLI::App &app)
+{
+    auto o = std::make_shared<DriveOptions>();
+    auto *c = app.add_subcommand("drive", "Plan a path (or read one) and drive it with paper C's potential-field follower "
+                                          "in the kinematic bicycle simulation, with optional moving obstacles");
+    addQueryOptions(c, o->query, false);
+    c->add_option("--path", o->pathCsv, "Drive this path instead of planning: CSV x,y[,yaw] (as plan --out writes)");
+    c->add_option("--scenario", o->scenario,
+                  "Moving obstacles (YAML: obstacles: [{shape, radius | size, waypoints, speed, start_time, loop}])");
+    c->add_option("--dt", o->dt, "Simulation step, s")->capture_default_str();
+    c->add_option("--xi", o->xi, "Attractive gain of the potential field")->capture_default_str();
+    c->add_option("--eta", o->eta, "Repulsive gain of the potential field")->capture_default_str();
+    c->add_option("--rho0", o->rho0, "Influence distance of obstacles, m (beyond the body's half width)")->capture_default_str();
+    c->add_flag("--json", o->json,
+                "Print one JSON object: outcome (reached | collided | stuck | timeout), reason, driving_time, path_length, "
+                "distance_driven, cross_track_mean, cross_track_max, min_clearance, recoveries, plan {...}");
+    c->add_option("--png", o->png, "Picture of the path (blue), the trajectory (red) and the moving obstacles (orange)");
+    c->add_option("--out", o->trajectoryCsv, "Trajectory CSV: t,x,y,yaw,v,steer");
+    c->footer("Exit status: 0 reached, 3 collided / stuck / timeout (or no plan), 2 bad input, 1 internal error.");
+    return {c, [o] { return runDrive(*o); }};
+}
+
+}  // namespace gridcar::cli

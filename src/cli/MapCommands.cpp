@@ -1,0 +1,219 @@
+// gridcar info / genmap / demo: maps, their distance field and pictures.
+#include "Cli.h"
+
+#include "gridcar/collision/FootprintChecker.h"
+#include "gridcar/distance/DistanceField.h"
+#include "gridcar/map/CampusGenerator.h"
+#include "gridcar/map/MapIO.h"
+#include "gridcar/render/Render.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace gridcar::cli
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+OccupancyGrid loadOrGenerate(const std::string &map, std::string &label)
+{
+    if (map.empty())
+    {
+        label = "embedded campus map (gridcar genmap, seed 1)";
+        return generateCampus();
+    }
+    label = map;
+    return loadMap(map);
+}
+
+struct InfoOptions
+{
+    std::string map;
+    bool json{false};
+    bool unknownFree{false};
+};
+
+struct GenmapOptions
+{
+    std::string out{"campus.yaml"};
+    std::string format{"pgm"};
+    std::string png;
+    unsigned long long seed{1};
+    int width{4846};
+    int height{2816};
+    double resolution{0.298};
+};
+
+struct DemoOptions
+{
+    std::string map;  ///< empty: the embedded campus map
+    std::string outDir{"gridcar-out"};
+    std::string vehicle{"paper-i"};
+};
+
+int runInfo(const InfoOptions &o)
+{
+    OccupancyGrid grid = loadMap(o.map);
+    const OccupancyGrid::Counts counts = grid.counts();
+    grid.setUnknownIsFree(o.unknownFree);
+    const DistanceField field(grid);
+    if (o.json)
+    {
+        nlohmann::json j;
+        j["width"] = grid.width();
+        j["height"] = grid.height();
+        j["resolution"] = grid.resolution();
+        j["origin"] = {grid.originX(), grid.originY(), grid.originYaw()};
+        j["free"] = counts.free;
+        j["occupied"] = counts.occupied;
+        j["unknown"] = counts.unknown;
+        j["max_clearance"] = field.maxDistance();
+        std::cout << j.dump() << "\n";
+        return 0;
+    }
+    std::printf("map        %s\n", o.map.c_str());
+    std::printf("size       %d x %d cells, %.3f m/cell (%.1f m x %.1f m)\n", grid.width(), grid.height(),
+                grid.resolution(), grid.sizeX(), grid.sizeY());
+    std::printf("origin     x %.3f  y %.3f  yaw %.3f rad%s\n", grid.originX(), grid.originY(), grid.originYaw(),
+                grid.originYaw() != 0.0 ? "  (yaw ignored, as by ROS costmap_2d)" : "");
+    const double n = double(grid.size());
+    std::printf("cells      free %zu (%.1f %%), occupied %zu (%.1f %%), unknown %zu (%.1f %%)\n", counts.free,
+                100.0 * counts.free / n, counts.occupied, 100.0 * counts.occupied / n, counts.unknown,
+                100.0 * counts.unknown / n);
+    std::printf("clearance  max %.2f m (unknown counted as %s)\n", field.maxDistance(),
+                o.unknownFree ? "free" : "occupied");
+    return 0;
+}
+
+int runGenmap(const GenmapOptions &o)
+{
+    if (o.format != "pgm" && o.format != "png") throw InputError("--format must be pgm or png");
+    CampusParams p;
+    p.width = o.width;
+    p.height = o.height;
+    p.resolution = o.resolution;
+    p.seed = o.seed;
+    const auto t0 = Clock::now();
+    OccupancyGrid grid;
+    try
+    {
+        grid = generateCampus(p);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        throw InputError(e.what());
+    }
+    std::string stem = o.out;
+    if (stem.size() > 5 && (stem.substr(stem.size() - 5) == ".yaml")) stem = stem.substr(0, stem.size() - 5);
+    const std::string yaml = stem + ".yaml";
+    const std::string imageName = std::filesystem::path(stem).filename().string() + "." + o.format;
+    if (auto parent = std::filesystem::path(yaml).parent_path(); !parent.empty()) ensureDir(parent.string());
+    saveRosMap(grid, yaml, imageName);
+    std::fprintf(stderr, "[genmap] %d x %d cells at %.3f m/cell, seed %llu, %.2f s -> %s\n", grid.width(),
+                 grid.height(), grid.resolution(), o.seed, secondsSince(t0), yaml.c_str());
+    if (!o.png.empty()) MapCanvas(grid).save(o.png);
+    return 0;
+}
+
+int runDemo(const DemoOptions &o)
+{
+    ensureDir(o.outDir);
+    auto t0 = Clock::now();
+    std::string label;
+    auto grid = std::make_shared<OccupancyGrid>(loadOrGenerate(o.map, label));
+    const auto counts = grid->counts();
+    std::fprintf(stderr, "[1/4] map loaded: %s (%.2f s)\n", label.c_str(), secondsSince(t0));
+    std::printf("map: %s\n  %d x %d cells at %.3f m/cell = %.0f m x %.0f m; free %.1f %%, occupied %.1f %%, unknown %.1f %%\n",
+                label.c_str(), grid->width(), grid->height(), grid->resolution(), grid->sizeX(), grid->sizeY(),
+                100.0 * counts.free / grid->size(), 100.0 * counts.occupied / grid->size(),
+                100.0 * counts.unknown / grid->size());
+    if (o.map.empty()) saveRosMap(*grid, o.outDir + "/campus.yaml", "campus.pgm");
+
+    t0 = Clock::now();
+    auto field = std::make_shared<const DistanceField>(*grid);
+    std::fprintf(stderr, "[2/4] distance field + Voronoi: %.2f s\n", secondsSince(t0));
+    std::printf("distance field: max clearance %.2f m, %zu Voronoi cells\n", field->maxDistance(),
+                field->voronoiCellCount());
+
+    const VehicleParams vehicle = VehicleParams::fromNameOrFile(o.vehicle);
+    t0 = Clock::now();
+    FootprintChecker checker(grid, field, vehicle);
+    std::fprintf(stderr, "[3/4] footprint checker (%zu FCL obstacle boxes): %.2f s\n", checker.obstacleBoxCount(),
+                 secondsSince(t0));
+    // fraction of free cells where the vehicle fits at some of 8 headings
+    std::size_t fits = 0, freeCells = 0;
+    for (int r = 0; r < grid->height(); r += 4)
+        for (int c = 0; c < grid->width(); c += 4)
+        {
+            if (grid->isBlocked(c, r)) continue;
+            ++freeCells;
+            if (checker.fitsAtSomeHeading(grid->cellCenterX(c), grid->cellCenterY(r), 8)) ++fits;
+        }
+    std::printf("vehicle %s (%.2f m x %.2f m, R_min %.2f m): fits at %.1f %% of free cells (sampled every 4th)\n",
+                vehicle.name.c_str(), vehicle.length, vehicle.width, vehicle.minTurningRadius(),
+                freeCells ? 100.0 * fits / freeCells : 0.0);
+
+    t0 = Clock::now();
+    MapCanvas canvas(*grid);
+    canvas.save(o.outDir + "/map.png");
+    // Voronoi diagram overlay
+    MapCanvas vor(*grid);
+    std::vector<Cell> vcells;
+    for (int r = 0; r < grid->height(); ++r)
+        for (int c = 0; c < grid->width(); ++c)
+            if (field->isVoronoi(c, r)) vcells.push_back({c, r});
+    vor.tintCells(vcells, {220, 40, 40});
+    vor.save(o.outDir + "/voronoi.png");
+    std::fprintf(stderr, "[4/4] pictures written (%.2f s)\n", secondsSince(t0));
+    std::printf("wrote %s/map.png and %s/voronoi.png%s\n", o.outDir.c_str(), o.outDir.c_str(),
+                o.map.empty() ? (" and " + o.outDir + "/campus.yaml").c_str() : "");
+    return 0;
+}
+
+}  // namespace
+
+Command addInfoCommand(CLI::App &app)
+{
+    auto o = std::make_shared<InfoOptions>();
+    auto *c = app.add_subcommand("info", "Print a map's size, origin, cell counts and max clearance");
+    c->add_option("--map", o->map, "Map file (.yaml, .map, .ppm, .pgm, .png)")->required();
+    c->add_flag("--json", o->json,
+                "Print one JSON object: width, height, resolution, origin, free, occupied, unknown (counts as read), "
+                "max_clearance (m)");
+    c->add_flag("--unknown-free", o->unknownFree, "Treat unknown cells as free for the clearance");
+    return {c, [o] { return runInfo(*o); }};
+}
+
+Command addGenmapCommand(CLI::App &app)
+{
+    auto o = std::make_shared<GenmapOptions>();
+    auto *c = app.add_subcommand("genmap", "Generate the embedded campus-like map (deterministic from --seed)");
+    c->add_option("--out", o->out, "Output YAML path; the image is written next to it")->capture_default_str();
+    c->add_option("--format", o->format, "Image format: pgm or png")->capture_default_str();
+    c->add_option("--png", o->png, "Also write a preview picture (PNG) to this path");
+    c->add_option("--seed", o->seed, "Random seed")->capture_default_str();
+    c->add_option("--width", o->width, "Width in cells")->capture_default_str();
+    c->add_option("--height", o->height, "Height in cells")->capture_default_str();
+    c->add_option("--resolution", o->resolution, "Metres per cell")->capture_default_str();
+    return {c, [o] { return runGenmap(*o); }};
+}
+
+Command addDemoCommand(CLI::App &app)
+{
+    auto o = std::make_shared<DemoOptions>();
+    auto *c = app.add_subcommand("demo", "Load the map (default: embedded campus), build distance field, Voronoi diagram "
+                                         "and footprint checker, print a summary and write pictures");
+    c->add_option("--map", o->map, "Map file (default: the embedded campus map)");
+    c->add_option("--out", o->outDir, "Output folder")->capture_default_str();
+    addVehicleOption(c, o->vehicle);
+    return {c, [o] { return runDemo(*o); }};
+}
+
+}  // namespace gridcar::cli

@@ -1,0 +1,148 @@
+// Option groups and parsing helpers shared by the gridcar commands.
+#include "Cli.h"
+
+#include "gridcar/bench/Format.h"
+#include "gridcar/map/MapIO.h"
+#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/planners/PlannerFactory.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace gridcar::cli
+{
+void addVehicleOption(CLI::App *cmd, std::string &vehicle)
+{
+    cmd->add_option("--vehicle", vehicle, "Vehicle preset (paper-i, paper-c-car, paper-c-robot, point) or YAML file")
+        ->capture_default_str();
+}
+
+void addTimeLimitOption(CLI::App *cmd, double &seconds, const std::string &what)
+{
+    cmd->add_option("--time-limit", seconds, what)->capture_default_str();
+}
+
+void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
+{
+    cmd->add_option("--map", q.map, "Map file (.yaml, .map, .ppm, .pgm, .png)")->required();
+    std::string plannerList;
+    for (const auto &n : plannerNames()) plannerList += (plannerList.empty() ? "" : ", ") + n;
+    auto *planner = cmd->add_option("--planner", q.planner, plannerList + " (or NAME+smooth)");
+    if (plannerRequired) planner->required();
+    cmd->add_option("--start", q.start,
+                    "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: free start heading for the grid "
+                    "planners (OMPL planners start at yaw 0)");
+    cmd->add_option("--start-cell", q.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row)");
+    cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW_DEG] (the goal heading counts only with --param match_goal_heading=1)");
+    cmd->add_option("--goal-cell", q.goalCell, "Goal COL,ROW[,HEADING_DEG]");
+    addVehicleOption(cmd, q.vehicle);
+    cmd->add_option("--param", q.params, "NAME=VALUE: set a declared planner parameter (repeatable)");
+    addTimeLimitOption(cmd, q.timeLimit, "Planning time limit, s");
+    cmd->add_flag("--smooth", q.smooth,
+                  "Post-process any planner's path as paper I does (line of sight, turning-point adjustment under K_max, "
+                  "Bezier); improved-astar does this itself unless --param smooth=0");
+    cmd->add_flag("--unknown-free", q.unknownFree, "Treat unknown cells as free");
+}
+
+Query loadQuery(const QueryArgs &q, bool withPoses)
+{
+    bench::checkTimeLimit(q.timeLimit);
+    Query query;
+    query.grid = std::make_shared<OccupancyGrid>(loadMap(q.map));
+    query.grid->setUnknownIsFree(q.unknownFree);
+    query.vehicle = VehicleParams::fromNameOrFile(q.vehicle);
+    if (withPoses)  // before the set-up: a malformed pose fails at once
+    {
+        bool goalYaw = false;
+        query.start = parsePose(q.start, q.startCell, "start", *query.grid, query.startYaw);
+        query.goal = parsePose(q.goal, q.goalCell, "goal", *query.grid, goalYaw);
+    }
+    query.setup = makeGridSetup(query.grid, query.vehicle);
+    return query;
+}
+
+std::string whyInvalid(const Query &query, const Pose2 &p)
+{
+    if (query.setup.checker->isValid(p)) return "";
+    const Cell c = query.grid->worldToCell(p.x, p.y);
+    return query.grid->inBounds(c.col, c.row) ? "in collision for vehicle " + query.vehicle.name : std::string("outside the map");
+}
+
+ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query)
+{
+    return configurePlanner(query.setup.ss->getSpaceInformation(),
+                            {q.planner, parsePlannerParams(q.params), !query.startYaw, q.smooth});
+}
+
+std::vector<double> parseNumbers(const std::string &text, const std::string &option, std::size_t minN, std::size_t maxN)
+{
+    std::vector<double> v;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ','))
+    {
+        std::size_t used = 0;
+        double x;
+        try
+        {
+            x = std::stod(item, &used);
+        }
+        catch (const std::exception &)
+        {
+            throw InputError(option + " '" + text + "': '" + item + "' is not a number");
+        }
+        if (used != item.size() && item.find_first_not_of(" \t", used) != std::string::npos)
+            throw InputError(option + " '" + text + "': '" + item + "' is not a number");
+        if (!std::isfinite(x)) throw InputError(option + " '" + text + "': values must be finite");
+        v.push_back(x);
+    }
+    if (v.size() < minN || v.size() > maxN)
+        throw InputError(option + " '" + text + "': expected " + std::to_string(minN) +
+                         (maxN > minN ? " or " + std::to_string(maxN) : std::string()) + " comma-separated numbers");
+    return v;
+}
+
+Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,
+                bool &hasYaw)
+{
+    if (world.empty() == cell.empty())
+        throw InputError("give exactly one of --" + which + " X,Y[,YAW_DEG] and --" + which + "-cell COL,ROW[,HEADING_DEG]");
+    Pose2 p;
+    if (!world.empty())
+    {
+        const auto v = parseNumbers(world, "--" + which, 2, 3);
+        p = {v[0], v[1], v.size() == 3 ? v[2] * M_PI / 180.0 : 0.0};
+        hasYaw = v.size() == 3;
+    }
+    else
+    {
+        const auto v = parseNumbers(cell, "--" + which + "-cell", 2, 3);
+        if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+            throw InputError("--" + which + "-cell: column and row must be integers");
+        if (std::abs(v[0]) > 1e9 || std::abs(v[1]) > 1e9 || !g.inBounds(int(v[0]), int(v[1])))
+            throw InputError("--" + which + "-cell " + cell + " is outside the " + std::to_string(g.width()) + " x " +
+                             std::to_string(g.height()) + " map");
+        p = {g.cellCenterX(int(v[0])), g.cellCenterY(int(v[1])), v.size() == 3 ? v[2] * M_PI / 180.0 : 0.0};
+        hasYaw = v.size() == 3;
+    }
+    p.yaw = wrapYaw(p.yaw);
+    return p;
+}
+
+std::string describe(const Pose2 &p)
+{
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "(%.3f, %.3f, %.1f deg)", p.x, p.y, p.yaw * 180.0 / M_PI);
+    return buf;
+}
+
+void ensureDir(const std::string &dir)
+{
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw InputError("cannot create output folder '" + dir + "': " + ec.message());
+}
+
+}  // namespace gridcar::cli

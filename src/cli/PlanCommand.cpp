@@ -1,0 +1,136 @@
+// gridcar plan: one query with any planner; the path as text, JSON, CSV and a picture.
+#include "Cli.h"
+
+#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/render/Render.h"
+
+#include <ompl/util/Console.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace gridcar::cli
+{
+namespace
+{
+struct PlanOptions
+{
+    QueryArgs query;
+    bool json{false};
+    std::string outCsv;
+    std::string png;
+};
+
+nlohmann::json resultJson(const QueryResult &q, const VehicleParams &vehicle)
+{
+    const PathMetrics &m = q.metrics;
+    nlohmann::json j;
+    j["status"] = q.status.asString();
+    j["cost"] = q.cost;
+    j["length"] = m.length;
+    j["expanded"] = q.expanded;
+    j["turns"] = m.turns;
+    j["max_turn_deg"] = q.maxTurnDeg;
+    j["min_clearance"] = m.minClearance;
+    j["min_path_distance"] = m.minPathDistance;
+    j["max_curvature"] = m.maxCurvature;
+    j["time"] = q.seconds;
+    j["smoothing_time"] = q.smoothingSeconds;
+    j["smoothed"] = q.smoothed;
+    if (q.smoothed)
+    {
+        j["adjust_failures"] = q.adjustFailures;
+        j["bezier_fallbacks"] = q.bezierFallbacks;
+    }
+    j["vehicle"] = vehicle.name;
+    nlohmann::json jp = nlohmann::json::array();
+    for (const Pose2 &p : q.path) jp.push_back({p.x, p.y, p.yaw});
+    j["path"] = jp;
+    return j;
+}
+
+void printResult(const std::string &planner, const QueryResult &q)
+{
+    const PathMetrics &m = q.metrics;
+    std::printf("%s: %s in %.3f s", planner.c_str(), q.status.asString().c_str(), q.seconds);
+    if (q.smoothed) std::printf(" (smoothing %.4f s)", q.smoothingSeconds);
+    std::printf("\n  length %.2f m, cost %.2f, %d poses, %d turns, max turn %.1f deg, max curvature %.3f 1/m, "
+                "min clearance %.2f m (path line %.2f m from obstacles)",
+                m.length, q.cost, int(q.path.size()), m.turns, q.maxTurnDeg, m.maxCurvature, m.minClearance, m.minPathDistance);
+    if (q.expanded) std::printf(", %llu nodes expanded", (unsigned long long)q.expanded);
+    if (q.smoothed && q.adjustFailures + q.bezierFallbacks > 0)
+        std::printf("\n  smoothing: %d corner(s) still above K_max, %d Bezier piece(s) collided and were kept sharp",
+                    q.adjustFailures, q.bezierFallbacks);
+    std::printf("\n");
+}
+
+void writeCsv(const std::string &file, const std::vector<Pose2> &path)
+{
+    std::ofstream f(file);
+    if (!f) throw InputError("cannot write " + file);
+    f << "x,y,yaw\n";
+    f.precision(10);
+    for (const Pose2 &p : path) f << p.x << "," << p.y << "," << p.yaw << "\n";
+}
+
+void drawPlan(const std::string &png, const Query &query, const ompl::base::Planner &planner, const QueryResult &q)
+{
+    MapCanvas canvas(*query.grid);
+    canvas.tintCells(exploredCells(planner, *query.grid), {170, 200, 255});
+    if (q.smoothed) canvas.polyline(q.rawPath, {250, 170, 60}, 1);
+    canvas.polyline(q.path, {220, 30, 30}, 2);
+    canvas.disc(query.start.x, query.start.y, 4, {0, 160, 0});
+    canvas.disc(query.goal.x, query.goal.y, 4, {0, 0, 200});
+    canvas.save(png);
+}
+
+int runPlan(const PlanOptions &o)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    Query query = loadQuery(o.query, true);
+    const ompl::base::PlannerPtr planner = queryPlanner(o.query, query);
+    // the same checks for every planner (OMPL's own planners do not all check the goal)
+    for (const auto &[what, pose] : {std::make_pair(std::string("start"), query.start), std::make_pair(std::string("goal"), query.goal)})
+    {
+        const std::string why = whyInvalid(query, pose);
+        if (why.empty()) continue;
+        const std::string msg = what + " " + describe(pose) + " is " + why;
+        if (o.json)
+            std::cout << nlohmann::json{{"planner", o.query.planner}, {"status", "Invalid " + what}, {"error", msg}}.dump() << "\n";
+        throw InputError(msg);
+    }
+    const QueryResult q = runQuery(query.setup, planner, query.start, query.goal, o.query.timeLimit);
+    if (o.json)
+    {
+        nlohmann::json j = resultJson(q, query.vehicle);
+        j["planner"] = o.query.planner;
+        std::cout << j.dump() << "\n";
+    }
+    else
+        printResult(o.query.planner, q);
+    if (!o.outCsv.empty()) writeCsv(o.outCsv, q.path);
+    if (!o.png.empty()) drawPlan(o.png, query, *planner, q);
+    return q.status == ompl::base::PlannerStatus::EXACT_SOLUTION ? 0 : 3;
+}
+}  // namespace
+
+Command addPlanCommand(CLI::App &app)
+{
+    auto o = std::make_shared<PlanOptions>();
+    auto *c = app.add_subcommand("plan", "Plan one path on a map with a grid planner or an OMPL planner");
+    addQueryOptions(c, o->query, true);
+    c->add_flag("--json", o->json,
+                "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, "
+                "min_path_distance, smoothing_time, min_clearance, time, path [[x, y, yaw_rad], ...]");
+    c->add_option("--out", o->outCsv, "Write the path as CSV (x,y,yaw)");
+    c->add_option("--png", o->png, "Write a picture of the map, the path (before smoothing in orange) and the states the "
+                                   "planner explored");
+    c->footer("Exit status: 0 exact solution, 3 no exact solution (timeout / approximate), 2 bad input (including a start "
+              "or goal off the map or in collision), 1 internal error.");
+    return {c, [o] { return runPlan(*o); }};
+}
+
+}  // namespace gridcar::cli

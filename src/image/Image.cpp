@@ -1,0 +1,199 @@
+#include "gridcar/image/Image.h"
+
+#include "gridcar/map/OccupancyGrid.h"
+
+#include <cctype>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+namespace gridcar
+{
+namespace
+{
+std::vector<std::uint8_t> readFileBytes(const std::string &path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw MapLoadError(path, "cannot open file (" + std::string(std::strerror(errno)) + ")");
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0) throw MapLoadError(path, "cannot determine file size");
+    if (size > (std::streamoff(1) << 31)) throw MapLoadError(path, "file larger than 2 GiB");
+    in.seekg(0, std::ios::beg);
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+    if (size > 0 && !in.read(reinterpret_cast<char *>(bytes.data()), size))
+        throw MapLoadError(path, "read error");
+    return bytes;
+}
+
+void checkDims(const std::string &path, long long w, long long h)
+{
+    if (w <= 0 || h <= 0)
+        throw MapLoadError(path, "image dimensions must be positive, got " + std::to_string(w) + " x " +
+                                     std::to_string(h));
+    if (w > (1 << 20) || h > (1 << 20) || (unsigned long long)w * (unsigned long long)h > kMaxMapCells)
+        throw MapLoadError(path, "image dimensions " + std::to_string(w) + " x " + std::to_string(h) +
+                                     " exceed the limit of " + std::to_string(kMaxMapCells) + " pixels");
+}
+
+/// Netpbm reader: P2/P3 (ASCII) and P5/P6 (binary), with '#' comments in the header.
+class PnmParser
+{
+public:
+    PnmParser(const std::string &path, const std::vector<std::uint8_t> &b) : path_(path), b_(b) {}
+
+    Image parse()
+    {
+        if (b_.size() < 2 || b_[0] != 'P') throw MapLoadError(path_, "not a Netpbm file (no 'P' magic)");
+        const char kind = char(b_[1]);
+        if (kind != '2' && kind != '3' && kind != '5' && kind != '6')
+            throw MapLoadError(path_, std::string("unsupported Netpbm type P") + kind +
+                                          " (supported: P2, P3, P5, P6)");
+        pos_ = 2;
+        const long long w = headerInt("width"), h = headerInt("height"), maxval = headerInt("maxval");
+        checkDims(path_, w, h);
+        if (maxval < 1 || maxval > 65535)
+            throw MapLoadError(path_, "maxval must be in 1..65535, got " + std::to_string(maxval));
+        Image img;
+        img.width = int(w);
+        img.height = int(h);
+        img.channels = (kind == '3' || kind == '6') ? 3 : 1;
+        const std::size_t n = std::size_t(w) * std::size_t(h) * std::size_t(img.channels);
+        img.data.resize(n);
+        if (kind == '5' || kind == '6')
+        {
+            // exactly one whitespace byte after maxval
+            if (pos_ >= b_.size() || !std::isspace(b_[pos_])) throw MapLoadError(path_, "truncated header");
+            ++pos_;
+            const std::size_t bps = maxval > 255 ? 2 : 1;
+            const std::size_t need = n * bps;
+            if (b_.size() - pos_ < need)
+                throw MapLoadError(path_, "truncated pixel data: expected " + std::to_string(need) +
+                                              " bytes, found " + std::to_string(b_.size() - pos_));
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                unsigned v = bps == 1 ? b_[pos_ + i] : (unsigned(b_[pos_ + 2 * i]) << 8) | b_[pos_ + 2 * i + 1];
+                img.data[i] = scale(v, unsigned(maxval));
+            }
+        }
+        else
+        {
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const long long v = dataInt(i);
+                if (v > maxval) throw MapLoadError(path_, "sample " + std::to_string(v) + " exceeds maxval");
+                img.data[i] = scale(unsigned(v), unsigned(maxval));
+            }
+        }
+        return img;
+    }
+
+private:
+    static std::uint8_t scale(unsigned v, unsigned maxval)
+    {
+        if (maxval == 255) return std::uint8_t(v);
+        return std::uint8_t((v * 255u + maxval / 2) / maxval);
+    }
+
+    void skipSpaceAndComments()
+    {
+        while (pos_ < b_.size())
+        {
+            if (std::isspace(b_[pos_])) ++pos_;
+            else if (b_[pos_] == '#')
+                while (pos_ < b_.size() && b_[pos_] != '\n') ++pos_;
+            else break;
+        }
+    }
+
+    long long readInt(const std::string &what)
+    {
+        skipSpaceAndComments();
+        if (pos_ >= b_.size()) throw MapLoadError(path_, "truncated: missing " + what);
+        if (!std::isdigit(b_[pos_]))
+            throw MapLoadError(path_, "bad " + what + ": expected a non-negative integer");
+        long long v = 0;
+        while (pos_ < b_.size() && std::isdigit(b_[pos_]))
+        {
+            v = v * 10 + (b_[pos_] - '0');
+            if (v > (1LL << 40)) throw MapLoadError(path_, what + " is absurdly large");
+            ++pos_;
+        }
+        return v;
+    }
+    long long headerInt(const std::string &what) { return readInt("header field " + what); }
+    long long dataInt(std::size_t i)
+    {
+        skipSpaceAndComments();
+        if (pos_ >= b_.size())
+            throw MapLoadError(path_, "truncated pixel data: only " + std::to_string(i) + " samples");
+        return readInt("sample");
+    }
+
+    const std::string &path_;
+    const std::vector<std::uint8_t> &b_;
+    std::size_t pos_{0};
+};
+
+void writeToVector(void *ctx, void *data, int size)
+{
+    auto *v = static_cast<std::vector<std::uint8_t> *>(ctx);
+    const auto *p = static_cast<const std::uint8_t *>(data);
+    v->insert(v->end(), p, p + size);
+}
+}  // namespace
+
+Image readImage(const std::string &path)
+{
+    const std::vector<std::uint8_t> bytes = readFileBytes(path);
+    if (bytes.empty()) throw MapLoadError(path, "file is empty");
+    static const std::uint8_t pngSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (bytes.size() >= 8 && std::memcmp(bytes.data(), pngSig, 8) == 0)
+    {
+        int w = 0, h = 0, comp = 0;
+        if (bytes.size() > size_t(INT32_MAX)) throw MapLoadError(path, "PNG too large");
+        if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &comp))
+            throw MapLoadError(path, std::string("bad PNG header: ") + stbi_failure_reason());
+        checkDims(path, w, h);
+        unsigned char *pix = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &comp, 0);
+        if (!pix) throw MapLoadError(path, std::string("cannot decode PNG: ") + stbi_failure_reason());
+        Image img;
+        img.width = w;
+        img.height = h;
+        img.channels = comp;
+        img.data.assign(pix, pix + std::size_t(w) * h * comp);
+        stbi_image_free(pix);
+        return img;
+    }
+    if (bytes[0] == 'P') return PnmParser(path, bytes).parse();
+    throw MapLoadError(path, "unsupported image format (expected PNG or Netpbm P2/P3/P5/P6)");
+}
+
+void writePng(const std::string &path, const Image &img)
+{
+    if (img.width <= 0 || img.height <= 0 || img.channels < 1 || img.channels > 4)
+        throw std::runtime_error(path + ": cannot write an empty image");
+    std::vector<std::uint8_t> out;
+    stbi_write_png_compression_level = 6;
+    if (!stbi_write_png_to_func(writeToVector, &out, img.width, img.height, img.channels, img.data.data(),
+                                img.width * img.channels))
+        throw std::runtime_error(path + ": PNG encoding failed");
+    std::ofstream f(path, std::ios::binary);
+    if (!f || !f.write(reinterpret_cast<const char *>(out.data()), std::streamsize(out.size())))
+        throw std::runtime_error(path + ": cannot write file (" + std::string(std::strerror(errno)) + ")");
+}
+
+void writePgm(const std::string &path, const Image &img)
+{
+    if (img.channels != 1) throw std::runtime_error(path + ": PGM needs a one-channel image");
+    std::ofstream f(path, std::ios::binary);
+    if (!f) throw std::runtime_error(path + ": cannot write file (" + std::string(std::strerror(errno)) + ")");
+    f << "P5\n# CREATOR: gridcar\n" << img.width << ' ' << img.height << "\n255\n";
+    f.write(reinterpret_cast<const char *>(img.data.data()), std::streamsize(img.data.size()));
+    if (!f) throw std::runtime_error(path + ": write error");
+}
+
+}  // namespace gridcar

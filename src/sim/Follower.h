@@ -1,0 +1,359 @@
+#pragma once
+// The state and the pieces of one step of paper C's potential-field follower (private to
+// gridcar_core; drivePath() in Simulation.cpp runs the loop).
+#include "gridcar/core/Angles.h"
+#include "gridcar/path/PostProcess.h"
+#include "gridcar/sim/Simulation.h"
+#include "gridcar/vehicle/Dynamics.h"
+
+#include "collision/detail/FclShapes.h"
+
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace gridcar::detail
+{
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// The obstacle as an FCL object at time t (height 1, in the z = 0 plane like the vehicle).
+inline std::unique_ptr<fcl::CollisionObjectd> fclObject(const MovingObstacle &o, double t)
+{
+    double x, y;
+    o.positionAt(t, x, y);
+    if (o.shape == MovingObstacle::Shape::Disc) return makeCylinder(x, y, o.radius);
+    return makeBox(x, y, o.sizeX, o.sizeY);
+}
+
+/// A path with its arc length, corners (sub-goals), velocity profile and clearance.
+struct TrackedPath
+{
+    std::vector<Pose2> pts;
+    std::vector<double> cum;      ///< arc length at each vertex
+    std::vector<double> cornerS;  ///< arc length of the corners that turn by more than 10 degrees
+    std::vector<double> clear;    ///< d_O - half width at each vertex (min with the previous one)
+    VelocityProfile profile;
+    double total{0.0};
+
+    TrackedPath(const std::vector<Pose2> &path, const FootprintChecker &checker)
+    {
+        for (const Pose2 &p : path)
+            if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+        if (pts.size() < 2) return;
+        cum.push_back(0.0);
+        for (std::size_t i = 1; i < pts.size(); ++i)
+            cum.push_back(cum.back() + std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y));
+        total = cum.back();
+        const std::vector<Pose2> tp = turningPoints(pts);
+        std::size_t j = 0;
+        for (std::size_t i = 1; i + 1 < tp.size(); ++i)
+        {
+            const double h0 = std::atan2(tp[i].y - tp[i - 1].y, tp[i].x - tp[i - 1].x);
+            const double h1 = std::atan2(tp[i + 1].y - tp[i].y, tp[i + 1].x - tp[i].x);
+            while (j < pts.size() && (pts[j].x != tp[i].x || pts[j].y != tp[i].y)) ++j;
+            if (j < pts.size() && std::abs(wrapAngle(h1 - h0)) > 10.0 * M_PI / 180.0) cornerS.push_back(cum[j]);
+        }
+        const VehicleParams &veh = checker.vehicle();
+        profile = velocityProfile(pts, veh);
+        const DistanceField &field = checker.field();
+        for (std::size_t i = 0; i < pts.size(); ++i)
+        {
+            const double c = field.distance(pts[i].x, pts[i].y) - veh.width / 2;
+            clear.push_back(i ? std::min(c, field.distance(pts[i - 1].x, pts[i - 1].y) - veh.width / 2) : c);
+        }
+    }
+
+    void pointAt(double s, double &x, double &y) const
+    {
+        s = std::clamp(s, 0.0, total);
+        const std::size_t i =
+            std::min<std::size_t>(pts.size() - 1, std::size_t(std::upper_bound(cum.begin(), cum.end(), s) - cum.begin()));
+        const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? 1 : i;
+        const double len = cum[b] - cum[a];
+        const double f = len > 0 ? (s - cum[a]) / len : 0.0;
+        x = pts[a].x + f * (pts[b].x - pts[a].x);
+        y = pts[a].y + f * (pts[b].y - pts[a].y);
+    }
+};
+
+/// The follower's state between steps and the pieces of one step (see drivePath()).
+class Follower
+{
+public:
+    Follower(const TrackedPath &path, const FootprintChecker &checker, const Scenario &scenario, const FollowerParams &prm)
+      : path_(path), checker_(checker), veh_(checker.vehicle()), field_(checker.field()), scenario_(scenario), prm_(prm)
+    {
+        halfWidth_ = veh_.width / 2;
+        aLat_ = lateralAccelLimit(veh_);
+        creep_ = 0.1 * veh_.maxSpeed;
+        frontOffset_ = std::max(veh_.length - veh_.rearOverhang, 0.0);
+        brakeRange_ = veh_.maxSpeed * veh_.maxSpeed / (2.0 * veh_.deceleration) + prm_.rho0 + 1.0;
+    }
+
+    /// Projects the vehicle on the path (nearest point on segments near the last one, never far
+    /// back); returns the cross-track distance.
+    double project(const VehicleState &st)
+    {
+        const auto &p = path_.pts;
+        double best = kInf, bestS = sProj_;
+        for (std::size_t i = seg_; i + 1 < p.size() && path_.cum[i] <= sProj_ + 3.0 * (prm_.lookaheadMin + 2.0); ++i)
+        {
+            const double ax = p[i].x, ay = p[i].y, bx = p[i + 1].x, by = p[i + 1].y;
+            const double len2 = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
+            const double f = len2 > 0 ? std::clamp(((st.x - ax) * (bx - ax) + (st.y - ay) * (by - ay)) / len2, 0.0, 1.0) : 0.0;
+            const double d = std::hypot(st.x - (ax + f * (bx - ax)), st.y - (ay + f * (by - ay)));
+            if (d < best - 1e-12)
+            {
+                best = d;
+                bestS = path_.cum[i] + f * std::sqrt(len2);
+            }
+        }
+        sProj_ = std::max(sProj_, bestS);
+        while (seg_ + 2 < p.size() && path_.cum[seg_ + 1] <= sProj_) ++seg_;
+        return best;
+    }
+
+    double progress() const { return sProj_; }
+
+    /// Progress bookkeeping and recovery: when progress along the path stalls for stuckWindow
+    /// seconds, a virtual obstacle where the vehicle is and a via-point further on; false (and
+    /// the reason in @p res) once maxRecoveries did not help.
+    bool recover(const VehicleState &st, double t, DriveResult &res)
+    {
+        if (sProj_ > progressMark_ + std::max(0.2, 0.05 * prm_.lookaheadMin))
+        {
+            progressMark_ = sProj_;
+            markTime_ = t;
+            viaBoost_ = 0.0;
+        }
+        else if (t - markTime_ > prm_.stuckWindow)
+        {
+            if (res.recoveries >= prm_.maxRecoveries)
+            {
+                res.outcome = DriveResult::Outcome::Stuck;
+                res.reason = "no progress along the path for " + std::to_string(int(prm_.stuckWindow)) + " s after " +
+                             std::to_string(res.recoveries) + " recoveries (local minimum or oscillation)";
+                return false;
+            }
+            ++res.recoveries;
+            virtualObstacles_.push_back(
+                {st.x + veh_.centreOffset() * std::cos(st.yaw), st.y + veh_.centreOffset() * std::sin(st.yaw)});
+            viaBoost_ += prm_.lookaheadMin + prm_.lookaheadTime * veh_.maxSpeed;
+            markTime_ = t;
+        }
+        return true;
+    }
+
+    /// Via-point: look-ahead @p L along the path, the next corner as a sub-goal until the
+    /// vehicle is within L / 2 of it.
+    void viaPoint(const VehicleState &st, double L, double &vx, double &vy) const
+    {
+        double viaS = std::min(path_.total, sProj_ + L + viaBoost_);
+        for (double cs : path_.cornerS)
+            if (cs > sProj_ && cs < viaS)
+            {
+                double cx, cy;
+                path_.pointAt(cs, cx, cy);
+                if (std::hypot(cx - st.x, cy - st.y) > L / 2) viaS = cs;
+                break;
+            }
+        path_.pointAt(viaS, vx, vy);
+    }
+
+    /// Attraction to the via-point (saturated) plus repulsion at the body's centre and front;
+    /// @p rhoMin receives the least obstacle distance seen.
+    void force(const VehicleState &st, double t, double L, double &fx, double &fy, double &rhoMin) const
+    {
+        double vx, vy;
+        viaPoint(st, L, vx, vy);
+        fx = prm_.xi * (vx - st.x), fy = prm_.xi * (vy - st.y);
+        const double fa = std::hypot(fx, fy), fmax = prm_.xi * std::max(L, 1e-3);
+        if (fa > fmax)
+        {
+            fx *= fmax / fa;
+            fy *= fmax / fa;
+        }
+        // the map's influence distance shrinks to what the path itself leaves (its clearance
+        // here + 0.3 m): where the planner threads a narrow passage, full-range repulsion would
+        // only push the vehicle off the path into a local minimum (paper C's known weakness)
+        const double rho0Static = std::clamp(path_.clear[std::min(seg_ + 1, path_.pts.size() - 1)] + 0.3, 0.3, prm_.rho0);
+        rhoMin = kInf;
+        const double off = veh_.centreOffset();
+        const double frontOff = veh_.length - veh_.rearOverhang - halfWidth_;
+        for (double o : {off, std::max(off, frontOff)})
+        {
+            const double px = st.x + o * std::cos(st.yaw), py = st.y + o * std::sin(st.yaw);
+            auto push = [&](double rho, double gx, double gy, double r0) {
+                rho = std::max(rho, 0.05);
+                rhoMin = std::min(rhoMin, rho);
+                if (rho >= r0) return;
+                const double gn = std::hypot(gx, gy);
+                if (gn < 1e-9) return;
+                const double mag = prm_.eta * (1.0 / rho - 1.0 / r0) / (rho * rho);
+                fx += mag * gx / gn;
+                fy += mag * gy / gn;
+            };
+            double gx, gy;
+            field_.gradient(px, py, gx, gy);
+            push(field_.distance(px, py) - halfWidth_, gx, gy, rho0Static);
+            for (const MovingObstacle &m : scenario_.obstacles)
+            {
+                double mx, my;
+                m.positionAt(t, mx, my);
+                push(m.distanceFrom(px, py, t) - halfWidth_, px - mx, py - my, prm_.rho0);
+            }
+            for (const auto &vo : virtualObstacles_)
+                push(std::hypot(px - vo.first, py - vo.second) - 0.5 - halfWidth_, px - vo.first, py - vo.second, prm_.rho0);
+        }
+    }
+
+    /// The speed command (see drivePath()).
+    double speedCommand(const VehicleState &st, double t, double err, double steerCmd, double rhoMin, double tol) const
+    {
+        const double total = path_.total;
+        const VelocityProfile &profile = path_.profile;
+        // the path's profile where the vehicle will be after this step (braking follows the
+        // profile, never above it), the profile a little ahead to start from rest
+        const double nextS = sProj_ + std::max(st.v * prm_.dt, 1e-3);
+        const double ahead = std::max(0.5, 2.0 * st.v * prm_.dt);
+        const double startV = profile.speedAt(std::min(sProj_ + ahead, total)) >= profile.speedAt(sProj_)
+                                  ? profile.speedAt(std::min(sProj_ + ahead, total)) : 0.0;
+        const double toGoal = std::max(total - nextS, 0.0);
+        const double floorV = toGoal > tol ? creep_ : 0.0;  // no creeping floor on the last metres: stop at the goal
+        double vCmd = std::max({profile.speedAt(std::min(nextS, total)), startV, floorV});
+        vCmd *= std::clamp(std::cos(err), 0.2, 1.0);
+        if (rhoMin < prm_.rho0) vCmd *= std::clamp(rhoMin / prm_.rho0, 0.5, 1.0);
+        const double phi = veh_.maxSteerDeg * M_PI / 180.0;
+        const double tanSteer = std::abs(std::tan(std::clamp(steerCmd, -phi, phi)));
+        if (tanSteer > 1e-6 && aLat_ > 0) vCmd = std::min(vCmd, std::sqrt(aLat_ * veh_.wheelbase / tanSteer));
+        vCmd = std::min(vCmd, std::max(std::sqrt(2.0 * veh_.deceleration * toGoal), floorV));
+        // never faster than lets the vehicle stop before what is straight ahead in its lane,
+        // v <= sqrt(2 d (free - margin)): for moving obstacles down to a standstill (yield);
+        // for the map and virtual obstacles down to a crawl, since the vehicle may be turning
+        // away (the rollout keeps the body free)
+        double freeMoving;
+        const double freeStatic = freeAhead(st, t, freeMoving);
+        const double margin = 0.1 + st.v * prm_.dt;
+        const double crawl = std::min(0.2 * veh_.maxSpeed, 0.5);
+        vCmd = std::min(vCmd, std::max(std::sqrt(2.0 * veh_.deceleration * std::max(freeStatic - margin, 0.0)), crawl));
+        vCmd = std::min(vCmd, std::sqrt(2.0 * veh_.deceleration * std::max(freeMoving - margin, 0.0)));
+        return vCmd;
+    }
+
+    /// Safety filter: a car's body swings when it steers (the rear overhang moves the other
+    /// way), so the commands are rolled out for a short horizon and softened until the rollout
+    /// stays free; if nothing does, the vehicle stops (and may end as stuck).
+    void safeCommand(const VehicleState &st, double t, double steerCmd, double vCmd, double &steerUse, double &vUse) const
+    {
+        steerUse = steerCmd, vUse = 0.0;
+        const double candidates[][2] = {{1.0, 1.0}, {0.5, 1.0}, {0.0, 1.0}, {1.0, 0.5}, {0.5, 0.5}, {0.0, 0.5}, {-0.5, 0.5}};
+        const int horizon = std::max(2, int(std::ceil(0.6 / prm_.dt)));
+        for (const auto &cand : candidates)
+        {
+            VehicleState r = st;
+            bool ok = true;
+            for (int k = 1; k <= horizon && ok; ++k)
+            {
+                r = stepBicycle(r, veh_, cand[0] * steerCmd, cand[1] * vCmd, prm_.dt);
+                if (k % (horizon / 2) != 0) continue;
+                ok = checker_.isValid(r.x, r.y, r.yaw);
+                for (const MovingObstacle &m : scenario_.obstacles)
+                {
+                    if (!ok) break;
+                    double mx, my;
+                    m.positionAt(t + k * prm_.dt, mx, my);
+                    ok = m.distanceFrom(r.x + veh_.centreOffset() * std::cos(r.yaw), r.y + veh_.centreOffset() * std::sin(r.yaw),
+                                        t + k * prm_.dt) > veh_.circumscribedRadius();
+                }
+            }
+            if (ok)
+            {
+                steerUse = cand[0] * steerCmd;
+                vUse = cand[1] * vCmd;
+                return;
+            }
+        }
+    }
+
+    /// Collision of the body with the map (FCL footprint checker) or a moving obstacle (FCL):
+    /// false with the reason in @p res; else @p clearance is the body's clearance.
+    bool bodyFree(const VehicleState &st, double t, DriveResult &res, double &clearance) const
+    {
+        if (!checker_.isValid(st.x, st.y, st.yaw))
+        {
+            res.outcome = DriveResult::Outcome::Collided;
+            res.reason = "hit the map at (" + std::to_string(st.x) + ", " + std::to_string(st.y) + ")";
+            return false;
+        }
+        clearance = checker_.clearance(st.x, st.y, st.yaw);
+        if (scenario_.obstacles.empty()) return true;
+        auto body = vehicleBox(veh_, st.x, st.y, st.yaw);
+        for (const MovingObstacle &m : scenario_.obstacles)
+        {
+            auto obj = fclObject(m, t);
+            fcl::CollisionRequestd creq;
+            fcl::CollisionResultd cres;
+            if (fcl::collide(body.get(), obj.get(), creq, cres) > 0)
+            {
+                res.outcome = DriveResult::Outcome::Collided;
+                res.reason = "hit moving obstacle '" + m.name + "' at t = " + std::to_string(t) + " s";
+                return false;
+            }
+            fcl::DistanceRequestd dreq;
+            fcl::DistanceResultd dres;
+            fcl::distance(body.get(), obj.get(), dreq, dres);
+            clearance = std::min(clearance, dres.min_distance);
+        }
+        return true;
+    }
+
+private:
+    /// Free distance ahead of the front bumper in a lane of the body's width: of the map and
+    /// the virtual obstacles (returned), and of the moving obstacles (@p freeMoving).
+    double freeAhead(const VehicleState &q, double time, double &freeMoving) const
+    {
+        const double cx = std::cos(q.yaw), cy = std::sin(q.yaw);
+        const double fx0 = q.x + frontOffset_ * cx, fy0 = q.y + frontOffset_ * cy;
+        double free = brakeRange_;
+        for (double sr = 0.0; sr < free;)
+        {
+            const double d = field_.distance(fx0 + sr * cx, fy0 + sr * cy);
+            if (d <= halfWidth_ + 0.02)
+            {
+                free = sr;
+                break;
+            }
+            sr += std::max(d - halfWidth_, 0.5 * field_.resolution());
+        }
+        auto lane = [&](double ox, double oy, double r, double &f) {
+            const double along = (ox - fx0) * cx + (oy - fy0) * cy, lateral = std::abs(-(ox - fx0) * cy + (oy - fy0) * cx);
+            if (along > -r && lateral < halfWidth_ + r) f = std::min(f, std::max(along - r, 0.0));
+        };
+        for (const auto &vo : virtualObstacles_) lane(vo.first, vo.second, 0.5, free);
+        freeMoving = brakeRange_;
+        for (const MovingObstacle &m : scenario_.obstacles)
+        {
+            double mx, my;
+            m.positionAt(time, mx, my);
+            lane(mx, my, m.shape == MovingObstacle::Shape::Disc ? m.radius : 0.5 * std::hypot(m.sizeX, m.sizeY), freeMoving);
+        }
+        return free;
+    }
+
+    const TrackedPath &path_;
+    const FootprintChecker &checker_;
+    const VehicleParams &veh_;
+    const DistanceField &field_;
+    const Scenario &scenario_;
+    const FollowerParams &prm_;
+    double halfWidth_, aLat_, creep_, frontOffset_, brakeRange_;
+    double sProj_{0.0}, progressMark_{0.0}, markTime_{0.0}, viaBoost_{0.0};
+    std::size_t seg_{0};
+    std::vector<std::pair<double, double>> virtualObstacles_;
+};
+}  // namespace gridcar::detail

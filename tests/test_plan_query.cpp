@@ -1,0 +1,104 @@
+// The query pipeline (planners/PlanQuery): configurePlanner, progress properties, runQuery.
+#include "gridcar/core/Errors.h"
+#include "gridcar/planners/CornerAStar.h"
+#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/planners/SmoothedPlanner.h"
+
+#include "PlannerTestUtil.h"
+
+#include <gtest/gtest.h>
+
+#include <ompl/util/Console.h>
+
+using namespace gridcar;
+using namespace gridcar::test;
+
+TEST(PlanQuery, ParsesParameterSettings)
+{
+    const PlannerParams p = parsePlannerParams({"mode=integral", "delta=0.5", "empty="});
+    ASSERT_EQ(p.size(), 3u);
+    EXPECT_EQ(p[0].first, "mode");
+    EXPECT_EQ(p[0].second, "integral");
+    EXPECT_EQ(p[2].second, "");
+    EXPECT_THROW(parsePlannerParams({"novalue"}), InputError);
+    EXPECT_THROW(parsePlannerParams({"=3"}), InputError);
+}
+
+TEST(PlanQuery, ConfigurePlannerAppliesParametersAndSaysWhatIsWrong)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    GridSetup s = testSetup();
+    const auto si = s.ss->getSpaceInformation();
+    auto p = configurePlanner(si, {"corner-astar", {{"corner_weight_90", "3.5"}}, true, false});
+    EXPECT_EQ(p->params().getParam("corner_weight_90")->getValue(), "3.5");
+    EXPECT_EQ(p->params().getParam("free_start_heading")->getValue(), "1");
+    try
+    {
+        configurePlanner(si, {"corner-astar", {{"wheels", "4"}}, false, false});
+        FAIL() << "an unknown parameter must be refused";
+    }
+    catch (const InputError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("no parameter 'wheels'"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("corner_weight_90"), std::string::npos) << "lists the parameters";
+    }
+    EXPECT_THROW(configurePlanner(si, {"corner-astar", {{"weights", "bogus"}}, false, false}), InputError);
+    EXPECT_THROW(configurePlanner(si, {"improved-astar", {{"mode", "bogus"}}, false, false}), InputError);
+    EXPECT_THROW(configurePlanner(si, {"no-such-planner", {}, false, false}), std::invalid_argument);
+    // OMPL's planners have no free_start_heading: asking for it is not an error
+    EXPECT_NO_THROW(configurePlanner(si, {"rrtconnect", {}, true, false}));
+}
+
+TEST(PlanQuery, SmoothingIsAddedOnceWhereThePlannerDoesNotSmoothItself)
+{
+    GridSetup s = testSetup("paper-c-robot");
+    const auto si = s.ss->getSpaceInformation();
+    EXPECT_TRUE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"astar-octile", {}, false, true}).get()));
+    EXPECT_FALSE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"astar-octile", {}, false, false}).get()));
+    // improved-astar smooths its own path (smooth = 1) ...
+    EXPECT_FALSE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"improved-astar", {}, false, true}).get()));
+    // ... unless told not to, when --smooth wraps it
+    EXPECT_TRUE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"improved-astar", {{"smooth", "0"}}, false, true}).get()));
+    // a "+smooth" name is not wrapped twice
+    auto named = configurePlanner(si, {"astar-octile+smooth", {}, false, true});
+    auto *sp = dynamic_cast<SmoothedPlanner *>(named.get());
+    ASSERT_TRUE(sp);
+    EXPECT_FALSE(dynamic_cast<SmoothedPlanner *>(sp->inner().get()));
+}
+
+TEST(PlanQuery, RunQueryReadsTheGridPlannersProgressProperties)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    GridSetup s = testSetup();
+    const Pose2 a = cellPose(*s.grid, 5, 30), b = cellPose(*s.grid, 50, 30);
+    auto p = configurePlanner(s.ss->getSpaceInformation(), {"corner-astar", {}, true, false});
+    const QueryResult q = runQuery(s, p, a, b, 5.0);
+    ASSERT_EQ(q.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
+    auto &corner = dynamic_cast<CornerAStar &>(*p);
+    EXPECT_EQ(q.expanded, corner.expandedNodes());
+    EXPECT_GT(q.expanded, 0u);
+    EXPECT_DOUBLE_EQ(q.cost, corner.lastCost());
+    EXPECT_DOUBLE_EQ(progressValue(*p, "search cost REAL"), corner.lastCost());
+    EXPECT_EQ(progressValue(*p, "no such property"), 0.0);
+    EXPECT_GE(q.metrics.length, 45 * 0.5 - 1e-9);
+    EXPECT_FALSE(q.smoothed);
+    const auto cells = exploredCells(*p, *s.grid);
+    EXPECT_EQ(cells.size(), q.expanded);
+    for (const Cell &c : cells) EXPECT_TRUE(s.grid->inBounds(c.col, c.row));
+}
+
+TEST(PlanQuery, RunQueryReportsSmoothingAndTheRawPath)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    GridSetup s = testSetup("paper-c-robot");
+    const Pose2 a = cellPose(*s.grid, 5, 30), b = cellPose(*s.grid, 50, 15);
+    auto p = configurePlanner(s.ss->getSpaceInformation(), {"astar-octile", {}, true, true});
+    const QueryResult q = runQuery(s, p, a, b, 5.0);
+    ASSERT_EQ(q.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_TRUE(q.smoothed);
+    EXPECT_GT(q.expanded, 0u) << "the wrapper forwards the inner planner's progress properties";
+    EXPECT_GE(q.rawPath.size(), 3u);
+    EXPECT_NE(q.rawPath.size(), q.path.size());
+    EXPECT_GE(q.smoothingSeconds, 0.0);
+    EXPECT_LE(q.smoothingSeconds, q.seconds);
+}
