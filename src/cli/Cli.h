@@ -33,6 +33,8 @@ Command addPaperICommand(CLI::App &app);
 Command addPaperCCommand(CLI::App &app);
 
 // ------------------------------------------------------------------ shared option groups
+/// `--map FILE` (required) in any of the formats the readers take.
+void addMapOption(CLI::App *cmd, std::string &map);
 /// `--vehicle NAME|FILE` (default paper-i).
 void addVehicleOption(CLI::App *cmd, std::string &vehicle);
 /// `--time-limit S`.

@@ -183,7 +183,7 @@ Command addInfoCommand(CLI::App &app)
 {
     auto o = std::make_shared<InfoOptions>();
     auto *c = app.add_subcommand("info", "Print a map's size, origin, cell counts and max clearance");
-    c->add_option("--map", o->map, "Map file (.yaml, .map, .ppm, .pgm, .png)")->required();
+    addMapOption(c, o->map);
     c->add_flag("--json", o->json,
                 "Print one JSON object: width, height, resolution, origin, free, occupied, unknown (counts as read), "
                 "max_clearance (m)");

@@ -13,6 +13,11 @@
 
 namespace gridcar::cli
 {
+void addMapOption(CLI::App *cmd, std::string &map)
+{
+    cmd->add_option("--map", map, "Map file (.yaml, .map, .ppm, .pgm, .png)")->required();
+}
+
 void addVehicleOption(CLI::App *cmd, std::string &vehicle)
 {
     cmd->add_option("--vehicle", vehicle, "Vehicle preset (paper-i, paper-c-car, paper-c-robot, point) or YAML file")
@@ -26,7 +31,7 @@ void addTimeLimitOption(CLI::App *cmd, double &seconds, const std::string &what)
 
 void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
 {
-    cmd->add_option("--map", q.map, "Map file (.yaml, .map, .ppm, .pgm, .png)")->required();
+    addMapOption(cmd, q.map);
     std::string plannerList;
     for (const auto &n : plannerNames()) plannerList += (plannerList.empty() ? "" : ", ") + n;
     auto *planner = cmd->add_option("--planner", q.planner, plannerList + " (or NAME+smooth)");

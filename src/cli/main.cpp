@@ -55,10 +55,10 @@ int main(int argc, char **argv)
                  "and a benchmark harness against OMPL's sampling planners.\n"
                  "Maps: ROS map_server .yaml (+ PGM/PNG), Moving AI .map, plain .ppm/.pgm/.png (dark = occupied)."};
     app.require_subcommand(1);
-    const std::vector<Command> commands = {addInfoCommand(app),  addGenmapCommand(app), addDemoCommand(app),
-                                           addVehicleCommand(app), addPlanCommand(app), addScenCommand(app),
-                                           addDriveCommand(app), addPaperCCommand(app), addBenchCommand(app),
-                                           addPaperICommand(app)};
+    const std::vector<Command> commands = {addInfoCommand(app),    addGenmapCommand(app), addDemoCommand(app),
+                                           addVehicleCommand(app), addPlanCommand(app),   addScenCommand(app),
+                                           addDriveCommand(app),   addBenchCommand(app),  addPaperICommand(app),
+                                           addPaperCCommand(app)};
     try
     {
         app.parse(argc, argv);
