@@ -157,6 +157,25 @@ TEST(VehicleParams, ReadsYamlFile)
     EXPECT_THROW(VehicleParams::fromNameOrFile(path), MapLoadError);
 }
 
+TEST(VehicleParams, MissingFileOrDirectoryIsSaidSoNotAnUnknownPreset)
+{
+    auto message = [](const std::string &arg) {
+        try
+        {
+            VehicleParams::fromNameOrFile(arg);
+        }
+        catch (const std::exception &e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_NE(message(test::tmpDir() + "/no-such-car.yaml").find("cannot open the vehicle file"), std::string::npos);
+    EXPECT_NE(message(test::tmpDir()).find("is a directory"), std::string::npos);
+    EXPECT_NE(message("tank").find("unknown vehicle preset 'tank'"), std::string::npos);
+    EXPECT_THROW(VehicleParams::fromNameOrFile(test::tmpDir() + "/no-such-car.yaml"), MapLoadError);
+}
+
 TEST(VehicleParams, ScaledKeepsTimingAndAnglesAndReadsFromYaml)
 {
     const VehicleParams car = VehicleParams::preset("paper-c-car");

@@ -126,6 +126,11 @@ TEST(RosMap, MalformedYamlGivesFileAndReason)
         {"image: img.pgm\nresolution: -0.05\norigin: [0, 0, 0]\n", "resolution must be positive"},
         {"image: img.pgm\nresolution: 0\norigin: [0, 0, 0]\n", "resolution must be positive"},
         {"image: img.pgm\nresolution: abc\norigin: [0, 0, 0]\n", "'resolution' must be a number"},
+        // finite but absurd: once accepted, they overflowed FCL's boxes (a crash in plan / drive)
+        {"image: img.pgm\nresolution: 1e155\norigin: [0, 0, 0]\n", "between 0.0001 and 1000 m per cell"},
+        {"image: img.pgm\nresolution: 1e-9\norigin: [0, 0, 0]\n", "between 0.0001 and 1000 m per cell"},
+        {"image: img.pgm\nresolution: 1\norigin: [1e155, 0, 0]\n", "more than 10000 km from 0"},
+        {"image: img.pgm\nresolution: 1\norigin: [0, -2e7, 0]\n", "more than 10000 km from 0"},
         {"image: img.pgm\nresolution: 1\norigin: [0, 0]\n", "'origin' must be a list [x, y, yaw]"},
         {"image: img.pgm\nresolution: 1\norigin: [0, .nan, 0]\n", "must be finite"},
         {"image: nothere.pgm\nresolution: 1\norigin: [0, 0, 0]\n", "cannot open file"},

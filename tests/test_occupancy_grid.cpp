@@ -59,6 +59,20 @@ TEST(OccupancyGrid, RejectsBadSizes)
     EXPECT_THROW(g.setOrigin(std::nan(""), 0, 0), std::invalid_argument);
 }
 
+TEST(OccupancyGrid, RejectsAbsurdResolutionsOriginsAndResampling)
+{
+    EXPECT_THROW(OccupancyGrid(10, 10, 1e155), std::invalid_argument);
+    EXPECT_THROW(OccupancyGrid(10, 10, 1e-9), std::invalid_argument);
+    EXPECT_THROW(OccupancyGrid(20000, 1, 1000.0), std::invalid_argument);  // 20 000 km wide
+    OccupancyGrid g(10, 10, 0.5);
+    EXPECT_THROW(g.setOrigin(1e155, 0, 0), std::invalid_argument);
+    EXPECT_NO_THROW(g.setOrigin(-1e6, 1e6, 0));
+    // a cell size so small the sizes would overflow an int (undefined behaviour before)
+    EXPECT_THROW(g.resampled(1e-300), std::invalid_argument);
+    EXPECT_THROW(g.resampled(1e-4), std::invalid_argument) << "50 000 x 50 000 cells is over the limit";
+    EXPECT_EQ(g.resampled(1.0).width(), 5);
+}
+
 TEST(OccupancyGrid, ResampleIsConservative)
 {
     OccupancyGrid g(6, 6, 0.1);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -27,6 +28,14 @@ std::string lowerExt(const std::string &path)
     std::string e = path.substr(dot + 1);
     std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return e;
+}
+
+/// A number for an error message ("1e+155", not 156 digits).
+std::string shortNumber(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
 }
 
 double yamlNumber(const YAML::Node &node, const std::string &key, const std::string &file)
@@ -60,8 +69,16 @@ bool getLineNoCR(std::istream &in, std::string &line)
 
 OccupancyGrid imageToGrid(const Image &img, const RosMapMeta &meta, const std::string &file)
 {
-    OccupancyGrid grid(img.width, img.height, meta.resolution, CellState::Unknown);
-    grid.setOrigin(meta.origin[0], meta.origin[1], meta.origin[2]);
+    OccupancyGrid grid;
+    try
+    {
+        grid = OccupancyGrid(img.width, img.height, meta.resolution, CellState::Unknown);
+        grid.setOrigin(meta.origin[0], meta.origin[1], meta.origin[2]);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        throw MapLoadError(file, e.what());
+    }
     const bool hasAlpha = img.channels == 2 || img.channels == 4;
     const int colourChannels = hasAlpha ? img.channels - 1 : img.channels;
     if (colourChannels < 1) throw MapLoadError(file, "image has no colour channel");
@@ -133,12 +150,15 @@ OccupancyGrid loadRosMap(const std::string &yamlPath, RosMapMeta *metaOut)
     if (meta.image.empty()) throw MapLoadError(yamlPath, "key 'image' is empty");
     meta.imagePath = meta.image[0] == '/' ? meta.image : dirOf(yamlPath) + meta.image;
     meta.resolution = yamlNumber(root["resolution"], "resolution", yamlPath);
-    if (meta.resolution <= 0.0)
-        throw MapLoadError(yamlPath, "resolution must be positive, got " + std::to_string(meta.resolution));
+    if (!(meta.resolution >= kMinResolution && meta.resolution <= kMaxResolution))
+        throw MapLoadError(yamlPath, "resolution must be positive and between 0.0001 and 1000 m per cell, got " + shortNumber(meta.resolution));
     const YAML::Node origin = root["origin"];
     if (!origin.IsSequence() || origin.size() != 3)
         throw MapLoadError(yamlPath, "key 'origin' must be a list [x, y, yaw]");
     for (int i = 0; i < 3; ++i) meta.origin[i] = yamlNumber(origin[i], "origin", yamlPath);
+    if (std::abs(meta.origin[0]) > kMaxMapExtent || std::abs(meta.origin[1]) > kMaxMapExtent)
+        throw MapLoadError(yamlPath, "origin is more than 10000 km from 0 (x " + shortNumber(meta.origin[0]) + ", y " +
+                                         shortNumber(meta.origin[1]) + ")");
     if (root["negate"])
     {
         const double n = yamlNumber(root["negate"], "negate", yamlPath);

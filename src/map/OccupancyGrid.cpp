@@ -21,10 +21,18 @@ OccupancyGrid::OccupancyGrid(int width, int height, double resolution, CellState
         os << "grid size " << width << " x " << height << " exceeds the limit of " << kMaxMapCells << " cells";
         throw std::invalid_argument(os.str());
     }
-    if (!std::isfinite(resolution) || resolution <= 0.0)
+    if (!std::isfinite(resolution) || resolution < kMinResolution || resolution > kMaxResolution)
     {
         std::ostringstream os;
-        os << "resolution must be a positive finite number of metres per cell, got " << resolution;
+        os << "resolution must be between " << kMinResolution << " and " << kMaxResolution << " metres per cell, got "
+           << resolution;
+        throw std::invalid_argument(os.str());
+    }
+    if (std::max(width, height) * resolution > kMaxMapExtent)
+    {
+        std::ostringstream os;
+        os << "a " << width << " x " << height << " map at " << resolution << " m per cell is larger than "
+           << kMaxMapExtent << " m";
         throw std::invalid_argument(os.str());
     }
     width_ = width;
@@ -37,6 +45,12 @@ void OccupancyGrid::setOrigin(double x, double y, double yaw)
 {
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw))
         throw std::invalid_argument("map origin must be finite");
+    if (std::abs(x) > kMaxMapExtent || std::abs(y) > kMaxMapExtent)
+    {
+        std::ostringstream os;
+        os << "map origin (" << x << ", " << y << ") is more than " << kMaxMapExtent << " m from 0";
+        throw std::invalid_argument(os.str());
+    }
     originX_ = x;
     originY_ = y;
     originYaw_ = yaw;
@@ -81,10 +95,24 @@ OccupancyGrid OccupancyGrid::cropped(int col0, int row0, int w, int h) const
 
 OccupancyGrid OccupancyGrid::resampled(double newResolution) const
 {
-    if (!std::isfinite(newResolution) || newResolution <= 0.0)
-        throw std::invalid_argument("resample resolution must be positive");
-    const int nw = std::max(1, int(std::ceil(sizeX() / newResolution - 1e-9)));
-    const int nh = std::max(1, int(std::ceil(sizeY() / newResolution - 1e-9)));
+    if (!std::isfinite(newResolution) || newResolution < kMinResolution || newResolution > kMaxResolution)
+    {
+        std::ostringstream os;
+        os << "resample resolution must be between " << kMinResolution << " and " << kMaxResolution
+           << " metres per cell, got " << newResolution;
+        throw std::invalid_argument(os.str());
+    }
+    // sizes as doubles first: a tiny cell size must give an error, not an overflowing cast
+    const double w = std::max(1.0, std::ceil(sizeX() / newResolution - 1e-9));
+    const double h = std::max(1.0, std::ceil(sizeY() / newResolution - 1e-9));
+    if (w * h > double(kMaxMapCells))
+    {
+        std::ostringstream os;
+        os << "resampling to " << newResolution << " m per cell would give " << w << " x " << h << " cells (limit "
+           << kMaxMapCells << ")";
+        throw std::invalid_argument(os.str());
+    }
+    const int nw = int(w), nh = int(h);
     OccupancyGrid out(nw, nh, newResolution, CellState::Free);
     out.setOrigin(originX_, originY_, originYaw_);
     out.setUnknownIsFree(unknownIsFree_);

@@ -3,6 +3,7 @@
 #include "gridcar/core/Errors.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -153,9 +154,15 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
 {
     for (const auto &n : presetNames())
         if (n == s) return preset(s);
+    std::error_code ec;
+    const bool looksLikeFile = s.find('/') != std::string::npos || s.find('.') != std::string::npos;
+    if (std::filesystem::is_directory(s, ec)) throw MapLoadError(s, "is a directory, not a vehicle file");
     std::ifstream probe(s);
     if (!probe)
+    {
+        if (looksLikeFile) throw MapLoadError(s, "cannot open the vehicle file (no such file, or not readable)");
         return preset(s);  // throws "unknown vehicle preset" with the list
+    }
     YAML::Node root;
     try
     {
