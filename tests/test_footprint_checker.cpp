@@ -171,6 +171,9 @@ TEST(VehicleParams, MissingFileOrDirectoryIsSaidSoNotAnUnknownPreset)
         return std::string("(no error)");
     };
     EXPECT_NE(message(test::tmpDir() + "/no-such-car.yaml").find("cannot open the vehicle file"), std::string::npos);
+    const std::string presetMap = test::tmpDir() + "/preset-map.yaml";
+    std::ofstream(presetMap) << "preset: {a: 1}\n";
+    EXPECT_NE(message(presetMap).find("'preset' must be a preset name"), std::string::npos);
     EXPECT_NE(message(test::tmpDir()).find("is a directory"), std::string::npos);
     EXPECT_NE(message("tank").find("unknown vehicle preset 'tank'"), std::string::npos);
     EXPECT_THROW(VehicleParams::fromNameOrFile(test::tmpDir() + "/no-such-car.yaml"), MapLoadError);

@@ -148,7 +148,8 @@ TEST(RosMap, MalformedYamlGivesFileAndReason)
         const std::string path = writeFile(name, c.first);
         expectLoadError([&] { loadRosMap(path); }, name, c.second);
     }
-    expectLoadError([&] { loadRosMap(test::tmpDir() + "/no-such.yaml"); }, "no-such.yaml", "cannot open file");
+    expectLoadError([&] { loadRosMap(test::tmpDir() + "/no-such.yaml"); }, "no-such.yaml", "cannot open the map file");
+    expectLoadError([&] { loadRosMap(test::tmpDir()); }, test::tmpDir(), "is a directory");
 }
 
 TEST(ImageReader, MalformedPnmAndPng)

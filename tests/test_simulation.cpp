@@ -157,4 +157,13 @@ TEST(Simulation, ScenarioFilesAreReadAndBadOnesNamed)
     std::ofstream(bad) << "obstacles:\n  - {radius: -1, waypoints: [[0, 0]]}\n";
     EXPECT_THROW(Scenario::load(bad), MapLoadError);
     EXPECT_THROW(Scenario::load((dir / "missing.yaml").string()), MapLoadError);
+    try
+    {
+        Scenario::load(dir.string());  // a directory: bad input, not a stream error
+        ADD_FAILURE() << "a directory must be refused";
+    }
+    catch (const MapLoadError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+    }
 }

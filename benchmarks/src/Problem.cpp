@@ -1,6 +1,7 @@
 #include "gridcar/bench/Problem.h"
 
 #include "gridcar/core/Angles.h"
+#include "gridcar/core/Files.h"
 
 #include <cmath>
 #include <filesystem>
@@ -17,6 +18,14 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
     Problem p;
     p.file = file;
     YAML::Node y;
+    try
+    {
+        requireReadableFile(file, "problem file");
+    }
+    catch (const MapLoadError &e)
+    {
+        throw InputError(e.what());
+    }
     try
     {
         y = YAML::LoadFile(file);

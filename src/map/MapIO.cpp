@@ -1,5 +1,7 @@
 #include "gridcar/map/MapIO.h"
 
+#include "gridcar/core/Files.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -123,10 +125,7 @@ OccupancyGrid imageToGrid(const Image &img, const RosMapMeta &meta, const std::s
 OccupancyGrid loadRosMap(const std::string &yamlPath, RosMapMeta *metaOut)
 {
     YAML::Node root;
-    {
-        std::ifstream probe(yamlPath);
-        if (!probe) throw MapLoadError(yamlPath, "cannot open file (" + std::string(std::strerror(errno)) + ")");
-    }
+    requireReadableFile(yamlPath, "map file");
     try
     {
         root = YAML::LoadFile(yamlPath);

@@ -2,6 +2,7 @@
 #include "gridcar/sim/Simulation.h"
 
 #include "gridcar/core/Errors.h"
+#include "gridcar/core/Files.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -56,6 +57,7 @@ Scenario Scenario::load(const std::string &file)
 {
     Scenario sc;
     YAML::Node y;
+    requireReadableFile(file, "scenario file");
     try
     {
         y = YAML::LoadFile(file);

@@ -1,6 +1,7 @@
 #include "gridcar/vehicle/VehicleParams.h"
 
 #include "gridcar/core/Errors.h"
+#include "gridcar/core/Files.h"
 
 #include <cmath>
 #include <filesystem>
@@ -154,15 +155,10 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
 {
     for (const auto &n : presetNames())
         if (n == s) return preset(s);
-    std::error_code ec;
     const bool looksLikeFile = s.find('/') != std::string::npos || s.find('.') != std::string::npos;
-    if (std::filesystem::is_directory(s, ec)) throw MapLoadError(s, "is a directory, not a vehicle file");
-    std::ifstream probe(s);
-    if (!probe)
-    {
-        if (looksLikeFile) throw MapLoadError(s, "cannot open the vehicle file (no such file, or not readable)");
-        return preset(s);  // throws "unknown vehicle preset" with the list
-    }
+    std::error_code ec;
+    if (!looksLikeFile && !std::filesystem::exists(s, ec)) return preset(s);  // throws "unknown vehicle preset" with the list
+    requireReadableFile(s, "vehicle file");
     YAML::Node root;
     try
     {
@@ -174,7 +170,11 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
     }
     if (!root.IsMap()) throw MapLoadError(s, "expected a YAML mapping of vehicle fields");
     VehicleParams v;
-    if (root["preset"]) v = preset(root["preset"].as<std::string>());
+    if (root["preset"])
+    {
+        if (!root["preset"].IsScalar()) throw MapLoadError(s, "field 'preset' must be a preset name");
+        v = preset(root["preset"].as<std::string>());
+    }
     v.name = s;
     double scale = 1.0;
     struct Field
@@ -197,6 +197,7 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
                   {"corner_speed_135", &v.cornerSpeed135}};
     for (const auto &kv : root)
     {
+        if (!kv.first.IsScalar()) throw MapLoadError(s, "field names must be plain words, not lists or mappings");
         const std::string key = kv.first.as<std::string>();
         if (key == "preset" || key == "name") continue;
         bool known = false;
