@@ -133,7 +133,7 @@ TEST(RosMap, MalformedYamlGivesFileAndReason)
         {"image: img.pgm\nresolution: 1\norigin: [0, -2e7, 0]\n", "more than 10000 km from 0"},
         {"image: img.pgm\nresolution: 1\norigin: [0, 0]\n", "'origin' must be a list [x, y, yaw]"},
         {"image: img.pgm\nresolution: 1\norigin: [0, .nan, 0]\n", "must be finite"},
-        {"image: nothere.pgm\nresolution: 1\norigin: [0, 0, 0]\n", "cannot open file"},
+        {"image: nothere.pgm\nresolution: 1\norigin: [0, 0, 0]\n", "cannot open the image file"},
         {"image: img.pgm\nresolution: 1\norigin: [0, 0, 0]\nmode: fancy\n", "unknown mode 'fancy'"},
         {"image: img.pgm\nresolution: 1\norigin: [0, 0, 0]\noccupied_thresh: 1.5\n", "must lie in [0, 1]"},
         {"image: img.pgm\nresolution: 1\norigin: [0, 0, 0]\nfree_thresh: 0.9\noccupied_thresh: 0.5\n",
@@ -161,6 +161,10 @@ TEST(ImageReader, MalformedPnmAndPng)
         {"P5\n2", "truncated"},
         {"P5\n2 2\n255\n\x01\x02", "truncated pixel data"},
         {"P5\n1000000000 1000000000\n255\n", "exceed the limit"},
+        // tiny files declaring big images: refused from the header, before any allocation
+        {"P6\n16384 16384\n255\n", "the header declares 16384 x 16384 pixels"},
+        {"P3\n16384 16384\n255\n1 2 3\n", "the header declares 16384 x 16384 pixels"},
+        {"P5\n20000 20000\n255\n", "exceed the limit"},
         {"P5\n0 5\n255\n", "dimensions must be positive"},
         {"P5\n2 2\n0\n....", "maxval must be in 1..65535"},
         {"P5\n2 2\n70000\n", "maxval must be in 1..65535"},
@@ -230,7 +234,9 @@ TEST(MovingAi, MalformedMaps)
         {"type octile\nheight 1\nwidth 3\nmap\n..\n", "has 2 characters, expected 3"},
         {"type octile\nheight 1\nwidth 3\nmap\n....\n", "has 4 characters, expected 3"},
         {"type octile\nheight 1\nwidth 3\nmap\n.x.\n", "invalid map character 'x'"},
-        {"type octile\nheight 3\nwidth 1\nmap\n.\n", "truncated: expected 3 map rows, found 1"},
+        {"type octile\nheight 1\nwidth 3\nmap\n.\x01.\n", "invalid map character '\\x01'"},  // no raw bytes echoed
+        {"type octile\nheight 16384\nwidth 16384\nmap\n" + std::string(16000, '.'), "the header declares 16384 x 16384 cells"},
+        {"type octile\nheight 3\nwidth 1\nmap\n.\n", "truncated: the header declares 1 x 3 cells"},
         {"type octile\nheight 1\nwidth 1\nmap\n.\n.\n", "more rows than the header's height"},
         {"type octile\nfoo 3\nheight 1\nwidth 1\nmap\n.\n", "unexpected header line"},
     };

@@ -1,9 +1,11 @@
 #include "gridcar/image/Image.h"
 
+#include "gridcar/core/Files.h"
 #include "gridcar/map/OccupancyGrid.h"
 
 #include <cctype>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -45,23 +47,42 @@ class PnmParser
 public:
     PnmParser(const std::string &path, const std::vector<std::uint8_t> &b) : path_(path), b_(b) {}
 
-    Image parse()
+    /// Reads the header (magic, width, height, maxval), checks the dimensions, and checks that a
+    /// file of @p fileSize bytes can hold the pixel data the header declares: all before
+    /// anything is allocated for the pixels (a 39-byte file must not cost 780 MB).
+    void header(std::size_t fileSize)
     {
         if (b_.size() < 2 || b_[0] != 'P') throw MapLoadError(path_, "not a Netpbm file (no 'P' magic)");
-        const char kind = char(b_[1]);
-        if (kind != '2' && kind != '3' && kind != '5' && kind != '6')
-            throw MapLoadError(path_, std::string("unsupported Netpbm type P") + kind +
+        kind_ = char(b_[1]);
+        if (kind_ != '2' && kind_ != '3' && kind_ != '5' && kind_ != '6')
+            throw MapLoadError(path_, std::string("unsupported Netpbm type P") + kind_ +
                                           " (supported: P2, P3, P5, P6)");
         pos_ = 2;
-        const long long w = headerInt("width"), h = headerInt("height"), maxval = headerInt("maxval");
-        checkDims(path_, w, h);
-        if (maxval < 1 || maxval > 65535)
-            throw MapLoadError(path_, "maxval must be in 1..65535, got " + std::to_string(maxval));
+        w_ = headerInt("width"), h_ = headerInt("height"), maxval_ = headerInt("maxval");
+        checkDims(path_, w_, h_);
+        if (maxval_ < 1 || maxval_ > 65535)
+            throw MapLoadError(path_, "maxval must be in 1..65535, got " + std::to_string(maxval_));
+        const std::size_t n = std::size_t(w_) * std::size_t(h_) * ((kind_ == '3' || kind_ == '6') ? 3 : 1);
+        const bool binary = kind_ == '5' || kind_ == '6';
+        // binary: the samples; ASCII: at least one digit and one separator per sample
+        const std::size_t need = binary ? n * (maxval_ > 255 ? 2 : 1) + 1 : 2 * n - 1;
+        const std::size_t have = fileSize > pos_ ? fileSize - pos_ : 0;
+        if (have < need)
+            throw MapLoadError(path_, "truncated pixel data: the header declares " + std::to_string(w_) + " x " +
+                                          std::to_string(h_) + " pixels, which need at least " + std::to_string(need) +
+                                          " more bytes, the file has " + std::to_string(have));
+    }
+
+    Image parse()
+    {
+        header(b_.size());
+        const char kind = kind_;
+        const long long maxval = maxval_;
         Image img;
-        img.width = int(w);
-        img.height = int(h);
+        img.width = int(w_);
+        img.height = int(h_);
         img.channels = (kind == '3' || kind == '6') ? 3 : 1;
-        const std::size_t n = std::size_t(w) * std::size_t(h) * std::size_t(img.channels);
+        const std::size_t n = std::size_t(w_) * std::size_t(h_) * std::size_t(img.channels);
         img.data.resize(n);
         if (kind == '5' || kind == '6')
         {
@@ -136,6 +157,8 @@ private:
     const std::string &path_;
     const std::vector<std::uint8_t> &b_;
     std::size_t pos_{0};
+    char kind_{0};
+    long long w_{0}, h_{0}, maxval_{0};
 };
 
 void writeToVector(void *ctx, void *data, int size)
@@ -148,6 +171,29 @@ void writeToVector(void *ctx, void *data, int size)
 
 Image readImage(const std::string &path)
 {
+    requireReadableFile(path, "image file");
+    {
+        // a Netpbm header is checked against the file's size before the file is read whole
+        std::ifstream in(path, std::ios::binary);
+        std::vector<std::uint8_t> head(4096);
+        in.read(reinterpret_cast<char *>(head.data()), std::streamsize(head.size()));
+        head.resize(std::size_t(in.gcount()));
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(path, ec);
+        if (!ec && head.size() >= 2 && head[0] == 'P' && std::isdigit(head[1]))
+        {
+            PnmParser probe(path, head);
+            try
+            {
+                probe.header(std::size_t(size));
+            }
+            catch (const MapLoadError &e)
+            {
+                // a header longer than the probe (long comments) is checked again on the whole file
+                if (std::string(e.what()).find("truncated: missing") == std::string::npos || head.size() >= size) throw;
+            }
+        }
+    }
     const std::vector<std::uint8_t> bytes = readFileBytes(path);
     if (bytes.empty()) throw MapLoadError(path, "file is empty");
     static const std::uint8_t pngSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -228,7 +229,7 @@ OccupancyGrid loadMovingAiMap(const std::string &path)
         else if (key == "map")
             sawMap = true;
         else
-            throw MapLoadError(path, "line " + std::to_string(lineNo) + ": unexpected header line '" + line + "'");
+            throw MapLoadError(path, "line " + std::to_string(lineNo) + ": unexpected header line '" + printable(line) + "'");
     }
     if (!sawType) throw MapLoadError(path, "missing header line 'type octile'");
     if (width < 0 || height < 0) throw MapLoadError(path, "missing 'height' or 'width' in the header");
@@ -236,6 +237,17 @@ OccupancyGrid loadMovingAiMap(const std::string &path)
     if (width <= 0 || height <= 0 || width > (1 << 20) || height > (1 << 20) ||
         (unsigned long long)(width) * (unsigned long long)(height) > kMaxMapCells)
         throw MapLoadError(path, "absurd map size " + std::to_string(width) + " x " + std::to_string(height));
+    {
+        // the rows must fit in what is left of the file before the grid is allocated for them
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(path, ec);
+        const std::streamoff at = in.tellg();
+        const unsigned long long need = (unsigned long long)(width) * (unsigned long long)(height) + (unsigned long long)(height) - 1;
+        if (!ec && at >= 0 && (unsigned long long)(size) - (unsigned long long)(at) < need)
+            throw MapLoadError(path, "truncated: the header declares " + std::to_string(width) + " x " + std::to_string(height) +
+                                         " cells, which need " + std::to_string(need) + " bytes of rows, the file has " +
+                                         std::to_string((unsigned long long)(size) - (unsigned long long)(at)));
+    }
     OccupancyGrid grid(int(width), int(height), 1.0, CellState::Free);
     for (int r = 0; r < height; ++r)
     {
@@ -255,7 +267,7 @@ OccupancyGrid loadMovingAiMap(const std::string &path)
                 case '@': case 'O': case 'T': case 'W': s = CellState::Occupied; break;
                 default:
                     throw MapLoadError(path, "line " + std::to_string(lineNo) + ", column " + std::to_string(c) +
-                                                 ": invalid map character '" + std::string(1, ch) + "'");
+                                                 ": invalid map character '" + printable(std::string(1, ch)) + "'");
             }
             grid.set(c, r, s);
         }

@@ -32,4 +32,25 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// @p text for an error message: control and non-ASCII bytes as \xNN, at most @p max
+/// characters (a hostile file must not write raw bytes to a terminal).
+inline std::string printable(const std::string &text, std::size_t max = 80)
+{
+    static const char *hex = "0123456789abcdef";
+    std::string out;
+    for (unsigned char c : text)
+    {
+        if (out.size() >= max)
+        {
+            out += "...";
+            break;
+        }
+        if (c >= 0x20 && c < 0x7f)
+            out += char(c);
+        else
+            out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    }
+    return out;
+}
+
 }  // namespace gridcar
