@@ -198,6 +198,28 @@ TEST(ImageReader, MalformedPnmAndPng)
     }
 }
 
+TEST(ImageReader, ZeroLengthIdatChunkIsSkipped)
+{
+    // legal PNG, but stb_image's inflater did null-pointer arithmetic on it (undefined
+    // behaviour; the sanitizer run of the tests would stop here)
+    Image img;
+    img.width = 3;
+    img.height = 2;
+    img.channels = 1;
+    img.data = {0, 50, 100, 150, 200, 250};
+    const std::string good = test::tmpDir() + "/idat.png";
+    writePng(good, img);
+    std::ifstream in(good, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t idat = bytes.find("IDAT");
+    ASSERT_NE(idat, std::string::npos);
+    bytes.insert(idat - 4, std::string("\0\0\0\0IDAT\x35\xaf\x06\x1e", 12));
+    const std::string bad = writeFile("idat-empty.png", bytes);
+    const Image back = readImage(bad);
+    EXPECT_EQ(back.width, 3);
+    EXPECT_EQ(back.data, img.data);
+}
+
 TEST(ImageReader, SixteenBitAndCommentsAreRead)
 {
     const std::string p = writeFile("s16.pgm", std::string("P5\n# a\n# b\n2 1\n65535\n") + std::string("\xff\xff\x00\x00", 4));

@@ -161,6 +161,25 @@ private:
     long long w_{0}, h_{0}, maxval_{0};
 };
 
+/// The PNG without its zero-length IDAT chunks (legal, and without data, but stb_image's
+/// inflater then does pointer arithmetic on a null pointer: undefined behaviour). Other chunks
+/// are copied unchanged; a chunk running past the end is left for stb_image to report.
+std::vector<std::uint8_t> withoutEmptyIdat(const std::vector<std::uint8_t> &png)
+{
+    std::vector<std::uint8_t> out(png.begin(), png.begin() + 8);
+    std::size_t i = 8;
+    while (i + 12 <= png.size())
+    {
+        const std::size_t len = (std::size_t(png[i]) << 24) | (std::size_t(png[i + 1]) << 16) | (std::size_t(png[i + 2]) << 8) | png[i + 3];
+        const bool emptyIdat = len == 0 && std::memcmp(&png[i + 4], "IDAT", 4) == 0;
+        const std::size_t end = len > png.size() - i - 12 ? png.size() : i + 12 + len;
+        if (!emptyIdat) out.insert(out.end(), png.begin() + std::ptrdiff_t(i), png.begin() + std::ptrdiff_t(end));
+        i = end;
+    }
+    out.insert(out.end(), png.begin() + std::ptrdiff_t(std::min(i, png.size())), png.end());
+    return out;
+}
+
 void writeToVector(void *ctx, void *data, int size)
 {
     auto *v = static_cast<std::vector<std::uint8_t> *>(ctx);
@@ -194,11 +213,12 @@ Image readImage(const std::string &path)
             }
         }
     }
-    const std::vector<std::uint8_t> bytes = readFileBytes(path);
+    std::vector<std::uint8_t> bytes = readFileBytes(path);
     if (bytes.empty()) throw MapLoadError(path, "file is empty");
     static const std::uint8_t pngSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     if (bytes.size() >= 8 && std::memcmp(bytes.data(), pngSig, 8) == 0)
     {
+        bytes = withoutEmptyIdat(bytes);
         int w = 0, h = 0, comp = 0;
         if (bytes.size() > size_t(INT32_MAX)) throw MapLoadError(path, "PNG too large");
         if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &comp))
