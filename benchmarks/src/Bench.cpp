@@ -6,6 +6,7 @@
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/objectives/Objectives.h"
+#include "gridcar/path/Drivability.h"
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/planners/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
@@ -97,6 +98,7 @@ void addRunProperties(const BenchWorld &w, const ompl::base::Planner &planner, c
     run["min clearance REAL"] = std::to_string(m.minClearance);
     run["path distance REAL"] = std::to_string(m.minPathDistance);
     run["driving time REAL"] = std::to_string(drivingTime(poses, w.vehicle));
+    run["drivable BOOLEAN"] = checkDrivable(poses, *w.setup.checker).drivable ? "1" : "0";
     // the path driven by paper C's potential-field follower in the kinematic simulation
     FollowerParams fp;
     fp.recordTrajectory = false;

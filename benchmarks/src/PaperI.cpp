@@ -147,7 +147,8 @@ void addRow(std::ostringstream &md, nlohmann::json &all, const MapCase &mc, cons
                    {"min_path_distance", q.metrics.minPathDistance}, {"min_clearance", q.metrics.minClearance},
                    {"max_turn_deg", q.maxTurnDeg}, {"smoothing_time", q.smoothingSeconds}, {"turns", q.metrics.turns},
                    {"max_curvature", q.metrics.maxCurvature}, {"adjust_failures", q.adjustFailures},
-                   {"bezier_fallbacks", q.bezierFallbacks}, {"start", {start.x, start.y}}, {"goal", {goal.x, goal.y}}});
+                   {"bezier_fallbacks", q.bezierFallbacks}, {"drivable", q.drivability.drivable},
+                   {"start", {start.x, start.y}}, {"goal", {goal.x, goal.y}}});
 }
 
 /// Every planner of the tables on one area: rows, JSON and a picture with every path.

@@ -98,6 +98,7 @@ QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, co
     }
     const bool searchCost = planner->getPlannerProgressProperties().count("search cost REAL") > 0;
     q.cost = searchCost ? progressValue(*planner, "search cost REAL") : q.metrics.length;
+    if (!q.path.empty()) q.drivability = checkDrivable(q.path, *setup.checker);
     return q;
 }
 

@@ -128,7 +128,8 @@ bool pathToDrive(const DriveOptions &o, Query &query, std::vector<Pose2> &path, 
     j["plan"] = {{"planner", p.planner},         {"status", q.status.asString()}, {"cost", q.cost},
                  {"length", q.metrics.length},   {"expanded", q.expanded},        {"turns", q.metrics.turns},
                  {"max_turn_deg", q.maxTurnDeg}, {"time", q.seconds},             {"min_clearance", q.metrics.minClearance},
-                 {"driving_time_profile", drivingTime(q.path, query.vehicle)}};
+                 {"driving_time_profile", drivingTime(q.path, query.vehicle)},
+                 {"drivable", q.drivability.drivable}};
     if (q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
     {
         std::fprintf(stderr, "%s: %s, nothing to drive\n", p.planner.c_str(), q.status.asString().c_str());

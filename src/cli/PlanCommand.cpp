@@ -46,6 +46,8 @@ nlohmann::json resultJson(const QueryResult &q, const VehicleParams &vehicle)
         j["bezier_fallbacks"] = q.bezierFallbacks;
     }
     j["vehicle"] = vehicle.name;
+    j["drivable"] = q.drivability.drivable;
+    if (!q.drivability.drivable) j["not_drivable_because"] = q.drivability.reason;
     nlohmann::json jp = nlohmann::json::array();
     for (const Pose2 &p : q.path) jp.push_back({p.x, p.y, p.yaw});
     j["path"] = jp;
@@ -61,6 +63,9 @@ void printResult(const std::string &planner, const QueryResult &q)
                 "min clearance %.2f m (path line %.2f m from obstacles)",
                 m.length, q.cost, int(q.path.size()), m.turns, q.maxTurnDeg, m.maxCurvature, m.minClearance, m.minPathDistance);
     if (q.expanded) std::printf(", %llu nodes expanded", (unsigned long long)q.expanded);
+    if (!q.path.empty())
+        std::printf("\n  %s", q.drivability.drivable ? "drivable: body free at 2 cm steps, curvature within K_max"
+                                                      : ("NOT drivable: " + q.drivability.reason).c_str());
     if (q.smoothed && q.adjustFailures + q.bezierFallbacks > 0)
         std::printf("\n  smoothing: %d corner(s) still above K_max, %d Bezier piece(s) collided and were kept sharp",
                     q.adjustFailures, q.bezierFallbacks);
@@ -124,7 +129,8 @@ Command addPlanCommand(CLI::App &app)
     addQueryOptions(c, o->query, true);
     c->add_flag("--json", o->json,
                 "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, "
-                "min_path_distance, smoothing_time, min_clearance, time, path [[x, y, yaw_rad], ...]");
+                "min_path_distance, smoothing_time, min_clearance, time, drivable (and not_drivable_because), "
+                "path [[x, y, yaw_rad], ...]");
     c->add_option("--out", o->outCsv, "Write the path as CSV (x,y,yaw)");
     c->add_option("--png", o->png, "Write a picture of the map, the path (before smoothing in orange) and the states the "
                                    "planner explored");

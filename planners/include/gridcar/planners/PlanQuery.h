@@ -4,6 +4,7 @@
 /// free start heading, paper I's smoothing), plan start -> goal, and measure the result. The
 /// `gridcar` program's plan / drive commands and the benchmark harness all go through it.
 
+#include "gridcar/path/Drivability.h"
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/path/PostProcess.h"
 #include "gridcar/spaces/Setup.h"
@@ -61,10 +62,15 @@ struct QueryResult
     double cost{0.0};              ///< the grid planner's search cost, else the path length
     bool smoothed{false};
     int adjustFailures{0}, bezierFallbacks{0};
+    /// checkDrivable() of `path` for the setup's vehicle: an exact solution is not
+    /// necessarily a path the vehicle can drive (a grid path's corners, a smoothed curve that
+    /// clips a curb); this says which, independently of the planner
+    Drivability drivability;
 };
 
 /// Solves start -> goal with @p planner on @p setup within @p timeLimit seconds (start / goal
-/// must be valid: the caller checks) and measures the path (computePathMetrics()).
+/// must be valid: the caller checks) and measures the path (computePathMetrics(), and
+/// checkDrivable() when there is one).
 QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &start, const Pose2 &goal,
                      double timeLimit);
 

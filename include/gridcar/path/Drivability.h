@@ -1,0 +1,44 @@
+#pragma once
+/// @file Drivability.h
+/// @brief An independent check that a path can be driven by the vehicle it was planned for:
+/// the full rectangle free at every pose, densely, and the curvature within K_max.
+
+#include "gridcar/collision/FootprintChecker.h"
+
+#include <string>
+#include <vector>
+
+namespace gridcar
+{
+/// Options of checkDrivable().
+struct DrivabilityOptions
+{
+    double step{0.02};                ///< m between checked poses along the path
+    double curvatureTolerance{1e-3};  ///< relative slack on K_max (rounding of sampled curves)
+};
+
+/// The verdict of checkDrivable().
+struct Drivability
+{
+    bool drivable{false};
+    std::string reason;          ///< why not (empty when drivable)
+    double maxCurvature{0.0};    ///< 1/m, largest heading change per vertex over its shorter segment
+    double firstCollision{-1.0}; ///< m of arc length where the body first hits something (-1: none)
+    int posesChecked{0};
+};
+
+/**
+ * @brief Drivable = every pose along the polyline, at most @p options.step apart (vertices
+ * included; yaw along the segment), has the full vehicle rectangle free by the exact FCL test
+ * (FootprintChecker::isValidExact, not the distance-field shortcut the planners use), and the
+ * path turns no tighter than K_max: at every vertex the heading change theta over the shorter
+ * adjacent segment is at most K_max (the discrete curvature of a sampled curve), and the vertex
+ * lies within one step of the arc of radius R_min that rounds it, R_min (sec(theta / 2) - 1)
+ * <= step (a long-legged sharp corner is a kink, whatever its legs' length). A grid path's
+ * corners are therefore not drivable; a smoothed curve sampled finely enough may be. A path of
+ * fewer than two distinct points is drivable if its pose is free.
+ */
+Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker &checker,
+                          const DrivabilityOptions &options = DrivabilityOptions());
+
+}  // namespace gridcar

@@ -1,0 +1,83 @@
+#include "gridcar/path/Drivability.h"
+
+#include "gridcar/core/Angles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace gridcar
+{
+Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker &checker, const DrivabilityOptions &options)
+{
+    Drivability d;
+    std::vector<Pose2> pts;
+    for (const Pose2 &p : path)
+        if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+    if (pts.empty())
+    {
+        d.reason = "empty path";
+        return d;
+    }
+    if (pts.size() == 1)
+    {
+        d.posesChecked = 1;
+        d.drivable = checker.isValidExact(pts[0].x, pts[0].y, pts[0].yaw);
+        if (!d.drivable) d.reason = "the pose is in collision";
+        return d;
+    }
+    const double step = options.step > 0 ? options.step : 0.02;
+    double s = 0.0;
+    for (std::size_t i = 1; i < pts.size() && d.firstCollision < 0; ++i)
+    {
+        const Pose2 &a = pts[i - 1], &b = pts[i];
+        const double len = std::hypot(b.x - a.x, b.y - a.y), yaw = std::atan2(b.y - a.y, b.x - a.x);
+        const int n = std::max(1, int(std::ceil(len / step)));
+        for (int k = 0; k <= n; ++k)  // each vertex at the yaw of both its segments
+        {
+            const double t = double(k) / n;
+            ++d.posesChecked;
+            if (!checker.isValidExact(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), yaw))
+            {
+                d.firstCollision = s + t * len;
+                break;
+            }
+        }
+        s += len;
+    }
+    // curvature at each vertex: the heading change over the shorter adjacent segment; and a
+    // kink must lie within one step of the curve of radius R_min that rounds it
+    const double kmax = checker.vehicle().maxCurvature();
+    double worstDeviation = 0.0;
+    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
+    {
+        const double l0 = std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+        const double l1 = std::hypot(pts[i + 1].x - pts[i].x, pts[i + 1].y - pts[i].y);
+        const double theta = std::abs(wrapAngle(headingOf(pts[i], pts[i + 1]) - headingOf(pts[i - 1], pts[i])));
+        d.maxCurvature = std::max(d.maxCurvature, theta / std::min(l0, l1));
+        if (std::isfinite(kmax) && theta > 1e-9)
+            worstDeviation = std::max(worstDeviation, theta >= M_PI - 1e-9 ? HUGE_VAL : (1.0 / std::cos(theta / 2) - 1.0) / kmax);
+    }
+    char buf[160];
+    if (d.firstCollision >= 0)
+    {
+        std::snprintf(buf, sizeof buf, "the body hits an obstacle %.2f m along the path", d.firstCollision);
+        d.reason = buf;
+    }
+    else if (std::isfinite(kmax) && !(d.maxCurvature <= kmax * (1.0 + options.curvatureTolerance)))
+    {
+        std::snprintf(buf, sizeof buf, "curvature %.3g 1/m exceeds K_max %.3g 1/m", d.maxCurvature, kmax);
+        d.reason = buf;
+    }
+    else if (worstDeviation > step)
+    {
+        std::snprintf(buf, sizeof buf, "a corner is %.2f m from the tightest curve (R_min) round it: too sharp to drive",
+                      worstDeviation);
+        d.reason = buf;
+    }
+    else
+        d.drivable = true;
+    return d;
+}
+
+}  // namespace gridcar
