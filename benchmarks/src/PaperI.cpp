@@ -147,7 +147,7 @@ void addRow(std::ostringstream &md, nlohmann::json &all, const MapCase &mc, cons
                    {"min_path_distance", q.metrics.minPathDistance}, {"min_clearance", q.metrics.minClearance},
                    {"max_turn_deg", q.maxTurnDeg}, {"smoothing_time", q.smoothingSeconds}, {"turns", q.metrics.turns},
                    {"max_curvature", q.metrics.maxCurvature}, {"adjust_failures", q.adjustFailures},
-                   {"bezier_fallbacks", q.bezierFallbacks}, {"drivable", q.drivability.drivable},
+                   {"bezier_fallbacks", q.bezierFallbacks}, {"drivable", q.drivability.drivable}, {"not_drivable_because", q.drivability.reason},
                    {"start", {start.x, start.y}}, {"goal", {goal.x, goal.y}}});
 }
 

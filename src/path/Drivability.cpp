@@ -45,7 +45,8 @@ Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker
         }
         s += len;
     }
-    // curvature at each vertex: the heading change over the shorter adjacent segment; and a
+    // curvature at each vertex: the heading change over the arc between the midpoints of its
+    // segments (half their summed length, the usual turning-angle estimate); and a
     // kink must lie within one step of the curve of radius R_min that rounds it
     const double kmax = checker.vehicle().maxCurvature();
     double worstDeviation = 0.0;
@@ -54,7 +55,7 @@ Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker
         const double l0 = std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
         const double l1 = std::hypot(pts[i + 1].x - pts[i].x, pts[i + 1].y - pts[i].y);
         const double theta = std::abs(wrapAngle(headingOf(pts[i], pts[i + 1]) - headingOf(pts[i - 1], pts[i])));
-        d.maxCurvature = std::max(d.maxCurvature, theta / std::min(l0, l1));
+        d.maxCurvature = std::max(d.maxCurvature, theta / (0.5 * (l0 + l1)));
         if (std::isfinite(kmax) && theta > 1e-9)
             worstDeviation = std::max(worstDeviation, theta >= M_PI - 1e-9 ? HUGE_VAL : (1.0 / std::cos(theta / 2) - 1.0) / kmax);
     }

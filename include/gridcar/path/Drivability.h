@@ -22,7 +22,7 @@ struct Drivability
 {
     bool drivable{false};
     std::string reason;          ///< why not (empty when drivable)
-    double maxCurvature{0.0};    ///< 1/m, largest heading change per vertex over its shorter segment
+    double maxCurvature{0.0};    ///< 1/m, largest turning-angle curvature at a vertex
     double firstCollision{-1.0}; ///< m of arc length where the body first hits something (-1: none)
     int posesChecked{0};
 };
@@ -31,8 +31,9 @@ struct Drivability
  * @brief Drivable = every pose along the polyline, at most @p options.step apart (vertices
  * included; yaw along the segment), has the full vehicle rectangle free by the exact FCL test
  * (FootprintChecker::isValidExact, not the distance-field shortcut the planners use), and the
- * path turns no tighter than K_max: at every vertex the heading change theta over the shorter
- * adjacent segment is at most K_max (the discrete curvature of a sampled curve), and the vertex
+ * path turns no tighter than K_max: at every vertex the heading change theta over half the
+ * summed length of its two segments is at most K_max (the turning-angle curvature of a sampled
+ * curve), and the vertex
  * lies within one step of the arc of radius R_min that rounds it, R_min (sec(theta / 2) - 1)
  * <= step (a long-legged sharp corner is a kink, whatever its legs' length). A grid path's
  * corners are therefore not drivable; a smoothed curve sampled finely enough may be. A path of
