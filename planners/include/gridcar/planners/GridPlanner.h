@@ -1,6 +1,6 @@
 #pragma once
 /// @file GridPlanner.h
-/// @brief Common OMPL plumbing of the grid A* planners (one search core, see SearchCore.h).
+/// @brief Common OMPL plumbing of the grid A* planners (one search core, search/AStar.h).
 
 #include "gridcar/collision/FootprintChecker.h"
 #include "gridcar/planners/search/AStar.h"
