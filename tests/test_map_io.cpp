@@ -269,7 +269,9 @@ TEST(MovingAi, MalformedMaps)
         const std::string path = writeFile(name, c.first);
         expectLoadError([&] { loadMovingAiMap(path); }, name, c.second);
     }
-    expectLoadError([&] { loadMovingAiMap(test::tmpDir() + "/none.map"); }, "none.map", "cannot open file");
+    expectLoadError([&] { loadMovingAiMap(test::tmpDir() + "/none.map"); }, "none.map", "cannot open the Moving AI map");
+    expectLoadError([&] { loadMovingAiMap(test::tmpDir()); }, test::tmpDir(), "is a directory, not a Moving AI map");
+    expectLoadError([&] { loadScenario(test::tmpDir()); }, test::tmpDir(), "is a directory, not a Moving AI scenario file");
 }
 
 TEST(MovingAi, ScenarioReader)

@@ -1,9 +1,9 @@
 // Moving AI benchmark maps (.map) and scenario files (.scen).
 #include "gridcar/map/MapIO.h"
 
-#include <cerrno>
+#include "gridcar/core/Files.h"
+
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -12,11 +12,11 @@ namespace gridcar
 {
 namespace
 {
-std::ifstream openText(const std::string &path)
+/// The file as text, after requireReadableFile() (a directory or a missing file is said so).
+std::ifstream openText(const std::string &path, const std::string &what)
 {
-    std::ifstream in(path);
-    if (!in) throw MapLoadError(path, "cannot open file (" + std::string(std::strerror(errno)) + ")");
-    return in;
+    requireReadableFile(path, what);
+    return std::ifstream(path);
 }
 
 bool getLineNoCR(std::istream &in, std::string &line)
@@ -29,7 +29,7 @@ bool getLineNoCR(std::istream &in, std::string &line)
 
 OccupancyGrid loadMovingAiMap(const std::string &path)
 {
-    std::ifstream in = openText(path);
+    std::ifstream in = openText(path, "Moving AI map");
     std::string line;
     long long width = -1, height = -1;
     bool sawType = false, sawMap = false;
@@ -110,7 +110,7 @@ OccupancyGrid loadMovingAiMap(const std::string &path)
 
 std::vector<ScenarioEntry> loadScenario(const std::string &path)
 {
-    std::ifstream in = openText(path);
+    std::ifstream in = openText(path, "Moving AI scenario file");
     std::string line;
     int lineNo = 0;
     bool sawVersion = false;
