@@ -41,6 +41,12 @@ void checkDims(const std::string &path, long long w, long long h)
                                      " exceed the limit of " + std::to_string(kMaxMapCells) + " pixels");
 }
 
+/// The bytes ended inside a Netpbm header (so a prefix of the file may simply be too short).
+struct TruncatedHeader : MapLoadError
+{
+    using MapLoadError::MapLoadError;
+};
+
 /// Netpbm reader: P2/P3 (ASCII) and P5/P6 (binary), with '#' comments in the header.
 class PnmParser
 {
@@ -133,7 +139,7 @@ private:
     long long readInt(const std::string &what)
     {
         skipSpaceAndComments();
-        if (pos_ >= b_.size()) throw MapLoadError(path_, "truncated: missing " + what);
+        if (pos_ >= b_.size()) throw TruncatedHeader(path_, "truncated: missing " + what);
         if (!std::isdigit(b_[pos_]))
             throw MapLoadError(path_, "bad " + what + ": expected a non-negative integer");
         long long v = 0;
@@ -206,10 +212,10 @@ Image readImage(const std::string &path)
             {
                 probe.header(std::size_t(size));
             }
-            catch (const MapLoadError &e)
+            catch (const TruncatedHeader &)
             {
                 // a header longer than the probe (long comments) is checked again on the whole file
-                if (std::string(e.what()).find("truncated: missing") == std::string::npos || head.size() >= size) throw;
+                if (head.size() >= size) throw;
             }
         }
     }
