@@ -91,6 +91,7 @@ TEST(CornerAStar, CostEqualsDijkstraOverTheSameGraphOnRandomMaps)
         do { gc = uc(rng); gr = ur(rng); } while (g->isBlocked(gc, gr) || (gc == sc && gr == sr));
         GridSetup s = makeGridSetup(g, VehicleParams::preset("point"));
         auto planner = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
+        planner->setMode("paper");  // paper C's 8-connected search, compared with a Dijkstra over the same graph
         CornerWeights w;
         w.w45 = 0.3 + trial * 0.2;
         w.w90 = 1.0 + trial * 0.5;
@@ -162,6 +163,7 @@ TEST(CornerAStar, NoReversalAndStartHeadingCounts)
     }
     GridSetup s = makeGridSetup(g, VehicleParams::preset("point"));
     auto planner = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
+    planner->setMode("paper");
     s.ss->setPlanner(planner);
     s.setStartAndGoal(cellPose(*g, 10, 1, 0.0), cellPose(*g, 3, 1));
     EXPECT_NE(s.ss->solve(1.0), ob::PlannerStatus::EXACT_SOLUTION);

@@ -35,6 +35,7 @@ std::shared_ptr<ImprovedAStar> improved(const GridSetup &s)
 {
     auto p = std::dynamic_pointer_cast<ImprovedAStar>(makePlanner(s.ss->getSpaceInformation(), "improved-astar"));
     EXPECT_TRUE(p);
+    p->setLattice("grid");  // these tests are about paper I's lattice on the map's cells
     return p;
 }
 

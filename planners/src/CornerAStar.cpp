@@ -67,7 +67,46 @@ CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanne
     declareParam<double>("corner_weight_135", this, &CornerAStar::setWeight135,
                          &CornerAStar::weight135, "0.:0.1:200.");
     declareParam<std::string>("weights", this, &CornerAStar::setWeightMode, &CornerAStar::weightMode, "paper,physics");
+    declareParam<std::string>("mode", this, &CornerAStar::setMode, &CornerAStar::mode, "drivable,paper");
+    declareCarLatticeParams();
 }
+
+void CornerAStar::setMode(const std::string &m)
+{
+    if (m != "drivable" && m != "paper")
+        throw std::invalid_argument("corner-astar: mode must be 'drivable' or 'paper', got '" + m + "'");
+    drivable_ = m == "drivable";
+    setup_ = false;
+}
+
+double CornerAStar::turnWeight(double rad) const
+{
+    const double deg = std::abs(rad) * 180.0 / M_PI;
+    const double table[4] = {0.0, weights_.w45, weights_.w90, weights_.w135};
+    if (deg >= 135.0) return weights_.w135 * deg / 135.0;
+    const int k = int(deg / 45.0);
+    const double t = deg / 45.0 - k;
+    return table[k] + t * (table[k + 1] - table[k]);
+}
+
+namespace
+{
+/// Corner A* on the car lattice: length + the corner weight of the heading change.
+class CornerCost : public LatticeCostModel
+{
+public:
+    explicit CornerCost(const CornerAStar &p) : p_(p) {}
+    double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double absTurn) const override
+    {
+        return length + p_.turnWeight(absTurn);
+    }
+
+private:
+    const CornerAStar &p_;
+};
+}  // namespace
+
+std::unique_ptr<LatticeCostModel> CornerAStar::carCost() const { return std::make_unique<CornerCost>(*this); }
 
 namespace
 {

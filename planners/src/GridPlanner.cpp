@@ -68,6 +68,18 @@ void GridPlanner::setup()
     diagStep_ = space_->cellSize() * std::sqrt(2.0);
     if (!scratchA_) scratchA_ = si_->allocState();
     if (!scratchB_) scratchB_ = si_->allocState();
+    if (usesCarLattice())
+    {
+        if (!checker_)
+            throw ompl::Exception(getName(), "the car lattice needs gridcar's footprint validity checker (see gridcar::makeGridSetup)");
+        const CarLatticeConfig cfg = carLatticeConfig();
+        const CarLatticeConfig *old = car_ ? &car_->lattice().config() : nullptr;
+        if (!old || old->cell != cfg.cell || old->headings != cfg.headings || old->turnRadius != cfg.turnRadius ||
+            old->spacing != cfg.spacing || old->reach != cfg.reach)
+            car_ = std::make_unique<CarLatticeSearch>(*checker_, std::make_shared<const CarLattice>(cfg));
+        return;  // no per-cell move cache or dense search arrays on the car lattice
+    }
+    car_.reset();
     const std::size_t cells = std::size_t(width_) * height_;
     if (moveCache_.size() != cells * 8) moveCache_.assign(cells * 8, 0);
     if (usesDenseSearch() && (!search_ || search_->size() != stateCount()))
@@ -155,6 +167,7 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     using ompl::base::PlannerStatus;
     checkValidity();
     freeDataStates();  // PlannerData states are cached by search state, which a new search renumbers
+    if (car_) return solveCarLattice(ptc);
     lastPath_.clear();
     lastExpanded_ = 0;
     progressExpanded_ = 0;
@@ -247,6 +260,11 @@ void GridPlanner::getPlannerData(ompl::base::PlannerData &data) const
 {
     ompl::base::Planner::getPlannerData(data);
     if (!space_) return;
+    if (car_)
+    {
+        getCarPlannerData(data);
+        return;
+    }
     // PlannerData identifies vertices by state pointer: one state per expanded search state,
     // owned here until clear() (decoupleFromPlanner() copies them)
     auto stateOf = [&](std::uint32_t s) {
@@ -272,6 +290,8 @@ void GridPlanner::freeDataStates()
 {
     for (auto &kv : dataStates_) si_->freeState(kv.second);
     dataStates_.clear();
+    for (auto *st : carDataStates_) si_->freeState(st);
+    carDataStates_.clear();
 }
 
 }  // namespace gridcar

@@ -19,6 +19,8 @@ ImprovedAStar::ImprovedAStar(const ompl::base::SpaceInformationPtr &si) : GridPl
                               "inverse,voronoi");
     declareParam<std::string>("contour", this, &ImprovedAStar::setContour, &ImprovedAStar::contour, "fcl,points");
     declareParam<bool>("smooth", this, &ImprovedAStar::setSmooth, &ImprovedAStar::smooth, "0,1");
+    declareParam<std::string>("lattice", this, &ImprovedAStar::setLattice, &ImprovedAStar::lattice, "car,grid");
+    declareCarLatticeParams();
 }
 
 namespace
@@ -38,6 +40,11 @@ std::string oneOf(const std::string &v, std::initializer_list<const char *> allo
 void ImprovedAStar::setMode(const std::string &m)
 {
     paperMode_ = oneOf(m, {"paper", "integral"}, "mode") == "paper";
+    setup_ = false;
+}
+void ImprovedAStar::setLattice(const std::string &l)
+{
+    car_ = oneOf(l, {"car", "grid"}, "lattice") == "car";
     setup_ = false;
 }
 void ImprovedAStar::setHeuristic(const std::string &h)
@@ -220,6 +227,65 @@ SearchResult ImprovedAStar::runSearch(const Query &q, const std::vector<std::uin
     }
     ImprovedExpander ex{this, q, keyCodec(), runStates_};
     return astar(hash_, starts, ex, cancelled, &progressExpanded_);
+}
+
+namespace
+{
+/// o(n) of paper I at a world point: delta / d_O (inverse) or delta x rho_V (voronoi).
+double obstacleCostAtPoint(const DistanceField &f, const OccupancyGrid &g, double delta, bool voronoi, const Pose2 &p)
+{
+    if (voronoi) return delta * f.voronoiField(p.x, p.y);
+    const Cell c = g.worldToCell(p.x, p.y);
+    const double d = f.cellDistance(c.col, c.row);
+    return d > 0 ? delta / d : std::numeric_limits<double>::infinity();
+}
+
+/// Integral mode on the car lattice: length x (1 + o), o averaged over the primitive's samples.
+class IntegralCost : public LatticeCostModel
+{
+public:
+    IntegralCost(const FootprintChecker &c, double delta, bool voronoi) : c_(c), delta_(delta), voronoi_(voronoi) {}
+    double stepCost(const Pose2 &, const std::vector<Pose2> &samples, double length, double) const override
+    {
+        double o = 0;
+        for (const Pose2 &p : samples) o += obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, p);
+        return length * (1.0 + o / double(std::max<std::size_t>(1, samples.size())));
+    }
+    double nodeWeight(const Pose2 &p) const override
+    {
+        return 1.0 + obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, p);
+    }
+    bool weighted() const override { return true; }
+
+private:
+    const FootprintChecker &c_;
+    double delta_;
+    bool voronoi_;
+};
+
+/// Paper mode on the car lattice: g = length, open list ordered by eq. 4-5 with o at the node.
+class PaperCost : public LatticeCostModel
+{
+public:
+    PaperCost(const FootprintChecker &c, double delta, bool voronoi) : c_(c), delta_(delta), voronoi_(voronoi) {}
+    double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double) const override { return length; }
+    bool customPriority() const override { return true; }
+    double priority(double g, double h, const Pose2 &at) const override
+    {
+        return ImprovedAStar::paperPriority(g, h, obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, at));
+    }
+
+private:
+    const FootprintChecker &c_;
+    double delta_;
+    bool voronoi_;
+};
+}  // namespace
+
+std::unique_ptr<LatticeCostModel> ImprovedAStar::carCost() const
+{
+    if (paperMode_) return std::make_unique<PaperCost>(*checker_, delta_, voronoi_);
+    return std::make_unique<IntegralCost>(*checker_, delta_, voronoi_);
 }
 
 bool ImprovedAStar::postProcess(ompl::geometric::PathGeometric &path)

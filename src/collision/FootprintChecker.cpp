@@ -28,7 +28,11 @@ FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, st
     rIn_ = vehicle_.inscribedRadius();
     rOut_ = vehicle_.circumscribedRadius();
     halfDiag_ = grid_->resolution() * std::sqrt(2.0) / 2.0;
+    reach_ = vehicle_.isPoint() ? 0.0 :
+                                  std::hypot(std::max(vehicle_.rearOverhang, vehicle_.length - vehicle_.rearOverhang),
+                                             vehicle_.width / 2);
     if (vehicle_.isPoint()) return;
+    body_ = makeBody(vehicle_, 0.0);
 
     // Obstacle boundary cells: blocked cells with a non-blocked 4-neighbour inside the map.
     const OccupancyGrid &g = *grid_;
@@ -122,43 +126,157 @@ void FootprintChecker::corners(double x, double y, double yaw, double cx[4], dou
     }
 }
 
+FootprintChecker::Body FootprintChecker::makeBody(const VehicleParams &v, double margin)
+{
+    Body b{};
+    b.length = v.length + 2 * margin;
+    b.width = v.width + 2 * margin;
+    b.rear = v.rearOverhang + margin;
+    b.rIn = 0.5 * std::min(b.length, b.width);
+    b.rOut = 0.5 * std::hypot(b.length, b.width);
+    b.discs = std::max(1, int(std::ceil(2 * b.length / std::max(b.width, 1e-9) - 1e-9)));
+    b.discStep = b.length / b.discs;
+    b.discR = std::hypot(b.width / 2, b.discStep / 2);
+    b.firstDisc = -b.rear + b.discStep / 2;
+    return b;
+}
+
+int FootprintChecker::quickBody(const Body &b, double x, double y, double yaw, double cs, double sn) const
+{
+    (void)yaw;
+    const double off = b.length / 2 - b.rear;
+    const Cell c = grid_->worldToCell(x + off * cs, y + off * sn);
+    if (grid_->isBlocked(c.col, c.row)) return 0;
+    const double d = field_->cellDistance(c.col, c.row);
+    if (d - 2.0 * halfDiag_ > b.rOut) return 1;
+    if (d + halfDiag_ < b.rIn) return 0;
+    for (int k = 0; k < b.discs; ++k)
+    {
+        const double along = b.firstDisc + k * b.discStep;
+        const Cell dc = grid_->worldToCell(x + along * cs, y + along * sn);
+        if (!(field_->cellDistance(dc.col, dc.row) - 2.0 * halfDiag_ > b.discR)) return -1;
+    }
+    return 2;  // proven free by the discs
+}
+
+bool FootprintChecker::exactBody(const Body &b, double x, double y, double yaw) const
+{
+    // one FCL box per thread and body size, moved to the pose (no allocation per check)
+    struct Cached
+    {
+        double length{-1}, width{-1};
+        std::unique_ptr<fcl::CollisionObjectd> obj;
+    };
+    thread_local Cached cache;
+    const double cs = std::cos(yaw), sn = std::sin(yaw), off = b.length / 2 - b.rear;
+    if (!cache.obj || cache.length != b.length || cache.width != b.width)
+    {
+        cache.obj = detail::makeBox(0, 0, std::max(b.length, 1e-3), std::max(b.width, 1e-3));
+        cache.length = b.length;
+        cache.width = b.width;
+    }
+    fcl::Transform3d tf = fcl::Transform3d::Identity();
+    tf.translation() = fcl::Vector3d(x + off * cs, y + off * sn, 0.0);
+    tf.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    cache.obj->setTransform(tf);
+    cache.obj->computeAABB();
+    fcl::DefaultCollisionData<double> data;
+    manager_->collide(cache.obj.get(), &data, fcl::DefaultCollisionFunction<double>);
+    return !data.result.isCollision();
+}
+
+bool FootprintChecker::validBody(const Body &b, double x, double y, double yaw) const
+{
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
+    const double cs = std::cos(yaw), sn = std::sin(yaw);
+    const int q = quickBody(b, x, y, yaw, cs, sn);
+    if (q == 0)
+    {
+        nFastCollision_.fetch_add(1, std::memory_order_relaxed);
+        return false;
+    }
+    if (q == 1)
+    {
+        nFastFree_.fetch_add(1, std::memory_order_relaxed);
+        return true;
+    }
+    if (q == 2)
+    {
+        nDiscFree_.fetch_add(1, std::memory_order_relaxed);
+        return true;
+    }
+    nExact_.fetch_add(1, std::memory_order_relaxed);
+    const double off = b.length / 2 - b.rear;
+    return rectFree(x + off * cs, y + off * sn, cs, sn, b.length / 2, b.width / 2);
+}
+
+bool FootprintChecker::rectFree(double cx, double cy, double cs, double sn, double a, double b) const
+{
+    const Cell c = grid_->worldToCell(cx, cy);
+    if (grid_->isBlocked(c.col, c.row)) return false;  // the centre lies in a blocked cell
+    if (field_->cellDistance(c.col, c.row) - 2.0 * halfDiag_ > std::hypot(a, b)) return true;
+    const double res = grid_->resolution();
+    if (a > res || b > res)
+    {
+        if (a >= b)
+            return rectFree(cx - cs * a / 2, cy - sn * a / 2, cs, sn, a / 2, b) &&
+                   rectFree(cx + cs * a / 2, cy + sn * a / 2, cs, sn, a / 2, b);
+        return rectFree(cx + sn * b / 2, cy - cs * b / 2, cs, sn, a, b / 2) &&
+               rectFree(cx - sn * b / 2, cy + cs * b / 2, cs, sn, a, b / 2);
+    }
+    // a piece at most a cell long: separating axes against each blocked square in reach
+    const double ex = a * std::abs(cs) + b * std::abs(sn), ey = a * std::abs(sn) + b * std::abs(cs);
+    const Cell lo = grid_->worldToCell(cx - ex, cy + ey), hi = grid_->worldToCell(cx + ex, cy - ey);
+    const double s = res / 2, su = s * (std::abs(cs) + std::abs(sn));
+    for (int row = std::min(lo.row, hi.row); row <= std::max(lo.row, hi.row); ++row)
+        for (int col = std::min(lo.col, hi.col); col <= std::max(lo.col, hi.col); ++col)
+        {
+            if (!grid_->isBlocked(col, row)) continue;
+            const double dx = grid_->cellCenterX(col) - cx, dy = grid_->cellCenterY(row) - cy;
+            if (std::abs(dx) > s + ex || std::abs(dy) > s + ey) continue;          // square's axes
+            if (std::abs(dx * cs + dy * sn) > a + su) continue;                     // rectangle's length
+            if (std::abs(-dx * sn + dy * cs) > b + su) continue;                    // rectangle's width
+            return false;
+        }
+    return true;
+}
+
+int FootprintChecker::quickVerdict(const Pose2 &p) const
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw)) return 0;
+    if (vehicle_.isPoint()) return cellBlockedAt(p.x, p.y) ? 0 : 1;
+    const int q = quickBody(body_, p.x, p.y, p.yaw, std::cos(p.yaw), std::sin(p.yaw));
+    return q >= 1 ? 1 : q;
+}
+
+bool FootprintChecker::provenFree(const Pose2 &p, double margin) const
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw) || !std::isfinite(margin)) return false;
+    if (vehicle_.isPoint()) return !cellBlockedAt(p.x, p.y) && !(margin > 0);
+    const Body b = margin > 0 ? makeBody(vehicle_, margin) : body_;
+    return quickBody(b, p.x, p.y, p.yaw, std::cos(p.yaw), std::sin(p.yaw)) >= 1;
+}
+
 bool FootprintChecker::isValidExact(double x, double y, double yaw) const
 {
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
     if (vehicle_.isPoint()) return !cellBlockedAt(x, y);
     const double off = vehicle_.centreOffset();
     if (cellBlockedAt(x + off * std::cos(yaw), y + off * std::sin(yaw))) return false;  // centre inside an obstacle or off the map
-    auto body = detail::vehicleBox(vehicle_, x, y, yaw);
-    fcl::DefaultCollisionData<double> data;
-    manager_->collide(body.get(), &data, fcl::DefaultCollisionFunction<double>);
-    return !data.result.isCollision();
+    return exactBody(body_, x, y, yaw);
 }
 
 bool FootprintChecker::isValid(double x, double y, double yaw) const
 {
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
-    if (vehicle_.isPoint()) return !cellBlockedAt(x, y);
-    const double off = vehicle_.centreOffset();
-    const double cxw = x + off * std::cos(yaw), cyw = y + off * std::sin(yaw);
-    const Cell c = grid_->worldToCell(cxw, cyw);
-    if (grid_->isBlocked(c.col, c.row))
-    {
-        nFastCollision_.fetch_add(1, std::memory_order_relaxed);
-        return false;
-    }
-    const double d = field_->cellDistance(c.col, c.row);
-    if (d - 2.0 * halfDiag_ > rOut_)
-    {
-        nFastFree_.fetch_add(1, std::memory_order_relaxed);
-        return true;
-    }
-    if (d + halfDiag_ < rIn_)
-    {
-        nFastCollision_.fetch_add(1, std::memory_order_relaxed);
-        return false;
-    }
-    nExact_.fetch_add(1, std::memory_order_relaxed);
-    return isValidExact(x, y, yaw);
+    if (vehicle_.isPoint()) return std::isfinite(x) && std::isfinite(y) && std::isfinite(yaw) && !cellBlockedAt(x, y);
+    return validBody(body_, x, y, yaw);
+}
+
+bool FootprintChecker::isValidInflated(const Pose2 &p, double margin) const
+{
+    if (!(margin > 0.0) || vehicle_.isPoint()) return isValid(p);
+    if (!std::isfinite(margin)) return false;
+    return validBody(makeBody(vehicle_, margin), p.x, p.y, p.yaw);
 }
 
 bool FootprintChecker::fitsAtSomeHeading(double x, double y, int headings, double *yaw) const
@@ -184,11 +302,7 @@ void FootprintChecker::setSweepFraction(double f)
 int FootprintChecker::sweepSteps(const Pose2 &a, const Pose2 &b) const
 {
     const double dyaw = wrapAngle(b.yaw - a.yaw);
-    // farthest point of the rectangle from the reference point
-    const double reach = vehicle_.isPoint() ? 0.0 :
-                                              std::hypot(std::max(vehicle_.rearOverhang, vehicle_.length - vehicle_.rearOverhang),
-                                                         vehicle_.width / 2);
-    const double travel = std::hypot(b.x - a.x, b.y - a.y) + std::abs(dyaw) * reach;
+    const double travel = std::hypot(b.x - a.x, b.y - a.y) + std::abs(dyaw) * reach_;
     const double step = sweepFraction_ * grid_->resolution();
     if (!std::isfinite(travel)) return -1;
     return std::max(1, int(std::ceil(travel / step)));
@@ -249,7 +363,7 @@ bool FootprintChecker::isValidDetectionPoints(double x, double y) const
 
 FootprintChecker::Stats FootprintChecker::stats() const
 {
-    return Stats{nFastFree_.load(), nFastCollision_.load(), nExact_.load()};
+    return Stats{nFastFree_.load(), nFastCollision_.load(), nExact_.load(), nDiscFree_.load()};
 }
 
 }  // namespace gridcar

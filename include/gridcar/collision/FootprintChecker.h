@@ -32,7 +32,16 @@ namespace gridcar
  *
  * isValid() first asks the DistanceField about the cell under the rectangle's centre: with
  * h = resolution * sqrt(2) / 2, it is free if d_O - 2h > circumscribed radius, and in collision
- * if d_O + h < inscribed radius (or the centre's cell is blocked). Otherwise an exact FCL test
+ * if d_O + h < inscribed radius (or the centre's cell is blocked). Next a cover of the rectangle
+ * by n discs along its axis (n = ceil(2 length / width), radius sqrt((w/2)^2 + (l/2n)^2)): free if
+ * every disc centre has d_O - 2h > that radius (d_O is a centre-to-centre distance: one h for the
+ * query point's place in its cell, one for the obstacle cell's extent, so a free verdict is never
+ * wrong). Beside a wall, where the circumscribed circle already touches, the discs usually still
+ * fit. What they leave undecided is settled exactly without FCL: the rectangle is halved
+ * (along its longer side) until each piece is either proven free by the distance field at its
+ * centre or is at most a cell long, and such a piece is tested against every blocked cell square
+ * within reach by the separating-axis theorem (rectangle and square axes). isValidExact() keeps
+ * the independent FCL test (the reference the tests compare against): the vehicle box against
  * runs: the vehicle box against the map's obstacle boundary cells, merged into rectangles (runs
  * along rows, then stacked runs of equal extent) and held in an FCL dynamic AABB tree, plus four
  * boxes that wall off the outside of the map. A rectangle wholly inside an obstacle has its centre
@@ -62,6 +71,22 @@ public:
     /// True if the vehicle rectangle at the pose overlaps no blocked cell. NaN/inf: false.
     bool isValid(double x, double y, double yaw) const;
     bool isValid(const Pose2 &p) const { return isValid(p.x, p.y, p.yaw); }
+    /**
+     * @brief The same test for the rectangle grown by @p margin >= 0 on every side. The car
+     * lattice checks its motions at poses spaced so that no body point moves more than 2 margin
+     * between two of them: every intermediate rectangle then lies inside the grown rectangle of
+     * one of the two poses, so the swept motion is certified, not only the sampled poses.
+     */
+    bool isValidInflated(const Pose2 &p, double margin) const;
+    /// The distance-field tests alone for the rectangle grown by @p margin: true only when
+    /// they prove it free (no FCL; false means "not proven", not "in collision").
+    bool provenFree(const Pose2 &p, double margin) const;
+    /// The distance-field tests alone (no FCL): 1 proven free, 0 proven in collision, -1 not
+    /// decided by them.
+    int quickVerdict(const Pose2 &p) const;
+    /// Farthest point of the rectangle from the reference point (m): how far a body point moves
+    /// per radian of rotation.
+    double reach() const { return reach_; }
     /// True if the vehicle fits at (x, y) at one of @p headings equally spaced yaws (k 2 pi /
     /// headings, from 0 up, wrapped into [-pi, pi)); @p yaw receives the first that fits.
     bool fitsAtSomeHeading(double x, double y, int headings, double *yaw = nullptr) const;
@@ -103,23 +128,40 @@ public:
     /// Counters of which path isValid() took (relaxed atomics; for benchmarks and tests).
     struct Stats
     {
-        std::uint64_t fastFree{0}, fastCollision{0}, exact{0};
+        std::uint64_t fastFree{0}, fastCollision{0}, exact{0}, discFree{0};
     };
     Stats stats() const;
     std::size_t obstacleBoxCount() const { return boxCount_; }
 
 private:
     bool cellBlockedAt(double x, double y) const;
+    /// Geometry of the (grown) rectangle the fast paths test.
+    struct Body
+    {
+        double length, width, rear;  ///< rear = distance from the reference point to the back
+        double rIn, rOut, discR, discStep, firstDisc;
+        int discs;
+    };
+    static Body makeBody(const VehicleParams &v, double margin);
+    bool validBody(const Body &b, double x, double y, double yaw) const;
+    /// 1 proven free, 0 proven blocked, -1 undecided by the distance field.
+    int quickBody(const Body &b, double x, double y, double yaw, double cs, double sn) const;
+    bool exactBody(const Body &b, double x, double y, double yaw) const;
+    /// Exact test of the rectangle centred at (cx, cy) with unit axis (cs, sn), half-length a
+    /// and half-width b, by recursive halving against the distance field down to a cell, then
+    /// a separating-axis test against each blocked cell square in reach.
+    bool rectFree(double cx, double cy, double cs, double sn, double a, double b) const;
 
     std::shared_ptr<const OccupancyGrid> grid_;
     std::shared_ptr<const DistanceField> field_;
     VehicleParams vehicle_;
-    double rIn_{0}, rOut_{0}, halfDiag_{0};
+    double rIn_{0}, rOut_{0}, halfDiag_{0}, reach_{0};
+    Body body_{};
     double sweepFraction_{0.5};
     std::size_t boxCount_{0};
     std::unique_ptr<fcl::BroadPhaseCollisionManager<double>> manager_;
     std::vector<std::unique_ptr<fcl::CollisionObject<double>>> objects_;
-    mutable std::atomic<std::uint64_t> nFastFree_{0}, nFastCollision_{0}, nExact_{0};
+    mutable std::atomic<std::uint64_t> nFastFree_{0}, nFastCollision_{0}, nExact_{0}, nDiscFree_{0};
 };
 
 }  // namespace gridcar

@@ -25,11 +25,14 @@ inline std::unique_ptr<fcl::CollisionObjectd> makeBox(double cx, double cy, doub
     return std::make_unique<fcl::CollisionObjectd>(geom, tf);
 }
 
-/// The vehicle's rectangle with its reference point (rear-axle centre) at (x, y, yaw).
-inline std::unique_ptr<fcl::CollisionObjectd> vehicleBox(const VehicleParams &v, double x, double y, double yaw)
+/// The vehicle's rectangle with its reference point (rear-axle centre) at (x, y, yaw), grown by
+/// @p margin on every side.
+inline std::unique_ptr<fcl::CollisionObjectd> vehicleBox(const VehicleParams &v, double x, double y, double yaw,
+                                                         double margin = 0.0)
 {
     const double off = v.centreOffset();
-    return makeBox(x + off * std::cos(yaw), y + off * std::sin(yaw), std::max(v.length, 1e-3), std::max(v.width, 1e-3), yaw);
+    return makeBox(x + off * std::cos(yaw), y + off * std::sin(yaw), std::max(v.length + 2 * margin, 1e-3),
+                   std::max(v.width + 2 * margin, 1e-3), yaw);
 }
 
 /// A vertical cylinder (height 1) of radius @p r at (x, y).

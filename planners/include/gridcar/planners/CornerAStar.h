@@ -10,7 +10,16 @@
 namespace gridcar
 {
 /**
- * @brief Corner-weighted A* (paper C): state = (cell, arrival direction); step cost = step
+ * @brief Corner-weighted A* (paper C).
+ *
+ * `mode = drivable` (default): the car lattice (search/CarLattice.h, the successors improved
+ * A* uses; `lattice_cell`, `headings` 8 or 16, default 16), step cost = primitive length +
+ * the corner weight of its heading change, interpolated linearly in the turn angle between
+ * 0 (0 degrees) and the 45 / 90 / 135-degree weights below (a 22.5-degree turn costs half the
+ * 45-degree weight; two 45-degree turns cost 2 x w45, a little less than w90). Its paths have
+ * curvature <= K_max and a free footprint as searched.
+ *
+ * `mode = paper`: paper C's 8-connected search on the map's cells: state = (cell, arrival direction); step cost = step
  * length + corner weight of the heading change (0 / 45 / 90 / 135 degrees). A 180-degree
  * reversal is never a successor. Heuristic: octile distance (admissible: weights are >= 0).
  *
@@ -47,6 +56,11 @@ public:
     void setWeight135(double w);
     void setWeightMode(const std::string &mode);
     std::string weightMode() const { return physics_ ? "physics" : "paper"; }
+    std::string mode() const { return drivable_ ? "drivable" : "paper"; }
+    void setMode(const std::string &m);
+    bool usesCarLattice() const override { return drivable_; }
+    /// Corner weight (m) of a heading change of @p rad radians (linear between the table's).
+    double turnWeight(double rad) const;
 
 protected:
     std::size_t stateCount() const override;
@@ -54,11 +68,13 @@ protected:
     SearchResult runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
                            const ompl::base::PlannerTerminationCondition &ptc) override;
     void decode(std::uint32_t s, int &col, int &row, int &dir) const override;
+    std::unique_ptr<LatticeCostModel> carCost() const override;
 
 private:
     CornerWeights userWeights_;  ///< paper mode (declared parameters)
     CornerWeights weights_;      ///< in use
     bool physics_{false};
+    bool drivable_{true};
 };
 
 }  // namespace gridcar

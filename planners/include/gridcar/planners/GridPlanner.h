@@ -4,6 +4,7 @@
 
 #include "gridcar/collision/FootprintChecker.h"
 #include "gridcar/planners/search/AStar.h"
+#include "gridcar/planners/search/CarLatticeSearch.h"
 #include "gridcar/spaces/GridSE2StateSpace.h"
 #include "gridcar/spaces/Lattice.h"
 
@@ -79,6 +80,21 @@ public:
     /// Seconds spent in the search loop itself by the last solve() (no path building).
     double lastSearchSeconds() const { return lastSearchSeconds_; }
 
+    // The car lattice (search/CarLattice.h), for the planners that search it.
+    /// Lattice cell size in metres; 0 = automatic (lattice_cell): the largest multiple of the
+    /// map resolution not above min(width, R_min) / 4, at least one map cell.
+    double latticeCell() const { return latticeCell_; }
+    void setLatticeCell(double m);
+    /// Heading count of the car lattice: 8 or 16 (`headings`).
+    int latticeHeadings() const { return latticeHeadings_; }
+    void setLatticeHeadings(int h);
+    /// True if the planner, as configured, searches the car lattice.
+    virtual bool usesCarLattice() const { return false; }
+    /// The car lattice in use after setup() (null on the grid lattice).
+    const CarLatticeSearch *carSearch() const { return car_.get(); }
+    /// The configuration setup() gives the car lattice for this map and vehicle.
+    CarLatticeConfig carLatticeConfig() const;
+
     /// The query in lattice terms.
     struct Query
     {
@@ -128,6 +144,12 @@ protected:
     /// Hook for a planner that post-processes its lattice path (default: none). Returns true
     /// when it replaced @p path.
     virtual bool postProcess(ompl::geometric::PathGeometric &path) { (void)path; return false; }
+    /// The cost the car lattice search minimises (a planner that uses it overrides this).
+    virtual std::unique_ptr<LatticeCostModel> carCost() const { return std::make_unique<LengthCost>(); }
+    /// Headings the car lattice gets (default: the `headings` parameter).
+    virtual int carHeadings() const { return latticeHeadings_; }
+    /// Declares `lattice_cell` and `headings` (for the planners that search the car lattice).
+    void declareCarLatticeParams();
 
 
     std::shared_ptr<GridSE2StateSpace> space_;
@@ -139,6 +161,13 @@ protected:
     std::uint64_t progressExpanded_{0};
 
 private:
+    ompl::base::PlannerStatus solveCarLattice(const ompl::base::PlannerTerminationCondition &ptc);
+    bool carGoal(CarLatticeQuery &q, ompl::base::PlannerStatus &bad);
+    void getCarPlannerData(ompl::base::PlannerData &data) const;
+    double latticeCell_{0.0};
+    int latticeHeadings_{16};
+    std::unique_ptr<CarLatticeSearch> car_;
+    mutable std::vector<ompl::base::State *> carDataStates_;
     bool checkMoveUncached(int col, int row, int d) const;
     bool fillMoveCache(int col, int row, int d) const;
     bool poseValid(double x, double y, double yaw) const;

@@ -16,7 +16,15 @@ namespace gridcar
  * heuristic, body-contour cost, obstacle-distance cost, turning-point adjustment and quadratic
  * Bezier smoothing.
  *
- * **Lattice.** State = (cell, heading of 8, straight run k). A successor keeps the heading or
+ * **Lattice** (`lattice`): `car` (default) searches the car lattice (search/CarLattice.h): its
+ * own cell size (`lattice_cell`, automatic by default), 8 headings in paper mode (paper I's
+ * 8 directions) and 8 or 16 (`headings`, default 16) in integral mode, primitives of curvature
+ * 0 or 1 / (1.01 R_min), footprint certified along every primitive, the obstacle-aware
+ * heuristic, and a Dubins curve into the exact goal: its paths are drivable as searched, so
+ * `smooth` does not apply. `grid` is the lattice described next, on the map's own cells, kept
+ * to reproduce paper I's tables.
+ *
+ * **Grid lattice.** State = (cell, heading of 8, straight run k). A successor keeps the heading or
  * turns it by 45 degrees (never more: a 90-degree corner takes two vertices), and a turn is
  * allowed only after the vehicle has run straight for need(heading) steps since the previous
  * turn, need = ceil(L_turn / step length), L_turn = 2 sin(22.5 deg) / (K_max cos^2(22.5 deg))
@@ -80,6 +88,9 @@ public:
     void setContour(const std::string &c);
     bool smooth() const { return smooth_; }
     void setSmooth(bool s) { smooth_ = s; }
+    std::string lattice() const { return car_ ? "car" : "grid"; }
+    void setLattice(const std::string &l);
+    bool usesCarLattice() const override { return car_; }
 
     /// Paper I's evaluation, eq. 4-5: f = g' + h (1 + o) + s with g' = g if g < o, else 0;
     /// s = 0 (successors with s = infinity are never generated).
@@ -91,13 +102,17 @@ public:
     /// Heuristic value from a cell to the goal cell, metres (after setup(), in the current mode).
     double heuristicAt(int col, int row, int goalCol, int goalRow) const;
     /// Post-processing report of the last solve() (empty when smooth = false).
-    const SmoothingResult &lastSmoothing() const override { return lastSmoothing_; }
+    const SmoothingResult &lastSmoothing() const override
+    {
+        static const SmoothingResult none;
+        return car_ ? none : lastSmoothing_;
+    }
     /// The lattice path of the last solve() before post-processing (world poses).
     const std::vector<Pose2> &lastLatticePath() const { return latticePath_; }
     const std::vector<Pose2> &lastRawPath() const override
     {
         static const std::vector<Pose2> none;
-        return smooth_ && !lastSmoothing_.path.empty() ? latticePath_ : none;
+        return !car_ && smooth_ && !lastSmoothing_.path.empty() ? latticePath_ : none;
     }
 
 protected:
@@ -111,10 +126,13 @@ protected:
     double gOf(std::uint32_t s) const override { return hash_.g(s); }
     void forEachClosed(const std::function<void(std::uint32_t)> &fn) const override;
     bool postProcess(ompl::geometric::PathGeometric &path) override;
+    std::unique_ptr<LatticeCostModel> carCost() const override;
+    int carHeadings() const override { return paperMode_ ? 8 : latticeHeadings(); }
 
 private:
     friend struct ImprovedExpander;
     bool paperMode_{true};
+    bool car_{true};
     std::string heuristic_{"auto"};
     double delta_{1.0};
     bool voronoi_{false};

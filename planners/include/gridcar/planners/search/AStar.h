@@ -66,8 +66,9 @@ struct SearchResult
  * Open list: with f = g + h on a SearchSpace, IndexedOpenList (one entry per state,
  * decrease-key); otherwise OpenList (a binary heap with lazy deletion: stale entries are
  * skipped when popped). Both pop in the same order. Tie-breaking is deterministic: lower f first, then higher g (deeper states, fewer
- * re-expansions on plateaus), then lower state index. @p cancelled is polled every 256
- * expansions. With a consistent heuristic each state is expanded at most once; with an
+ * re-expansions on plateaus), then lower state index. @p cancelled is polled whenever the
+ * expansion count & @p pollMask is 0 (every 256 expansions by default; the car lattice, whose
+ * expansions check whole primitives, polls every 16). With a consistent heuristic each state is expanded at most once; with an
  * inconsistent one (paper I's mode) a closed state is reopened when a cheaper g reaches it.
  */
 /// Relative improvement of g below which astar() does not reopen a closed state.
@@ -75,7 +76,7 @@ constexpr double kReopenTolerance = 1e-9;
 
 template <class Space, class Expander, class Cancelled>
 SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expander &ex, Cancelled &&cancelled,
-                   std::uint64_t *progress = nullptr, bool reopen = true)
+                   std::uint64_t *progress = nullptr, bool reopen = true, std::uint64_t pollMask = 255u)
 {
     constexpr bool custom = HasPriority<Expander>::value;
     auto priorityOf = [&](double g, double h, std::uint32_t s) {
@@ -134,7 +135,7 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
             res.goal = es;
             return res;
         }
-        if ((res.expanded & 255u) == 0 && cancelled())
+        if ((res.expanded & pollMask) == 0 && cancelled())
         {
             res.outcome = SearchOutcome::Cancelled;
             return res;

@@ -1,0 +1,329 @@
+// The car-lattice benchmark of the issue "fast, drivable search at the map's native resolution":
+// seeded random pairs on a real map at its own resolution, each of gridcar's car-lattice planners
+// on each vehicle, every path checked independently (checkDrivable: exact FCL at 2 cm, curvature
+// <= K_max), solve() times, set-up time and peak RSS; OMPL's BIT* on a Reeds-Shepp space with
+// the same footprint checker and the same start / goal poses on the first pairs; and on the
+// embedded campus the old grid lattice beside the car lattice from the same run.
+// Output: Markdown tables on stdout, progress on stderr. See docs/performance.md.
+#include "gridcar/map/CampusGenerator.h"
+#include "gridcar/map/MapIO.h"
+#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/vehicle/Dynamics.h"
+
+#include <CLI/CLI.hpp>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/util/Console.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace gridcar;
+
+namespace
+{
+double peakRssMb()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_maxrss / 1024.0;
+}
+
+double seconds(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double quantile(std::vector<double> v, double q)
+{
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5))];
+}
+
+/// Seeded random pairs dist apart in [lo, hi] m on cells where the circumscribed disc fits, in
+/// one connected region of the cells with d_O > width / 2 (the car cannot join two others).
+std::vector<std::pair<Pose2, Pose2>> randomPairs(const FootprintChecker &fc, int n, unsigned seed, double lo, double hi)
+{
+    const OccupancyGrid &g = fc.grid();
+    const DistanceField &f = fc.field();
+    const int W = g.width(), H = g.height();
+    const double h = g.resolution() * std::sqrt(2.0);
+    std::vector<int> label(std::size_t(W) * H, -1);
+    int labels = 0;
+    for (int start = 0; start < W * H; ++start)
+    {
+        if (label[std::size_t(start)] >= 0 || f.cellDistance(start % W, start / W) <= fc.vehicle().width / 2) continue;
+        std::deque<int> q{start};
+        label[std::size_t(start)] = labels;
+        while (!q.empty())
+        {
+            const int k = q.front();
+            q.pop_front();
+            const int c = k % W, r = k / W;
+            const int nb[4][2] = {{c + 1, r}, {c - 1, r}, {c, r + 1}, {c, r - 1}};
+            for (const auto &p : nb)
+            {
+                if (p[0] < 0 || p[1] < 0 || p[0] >= W || p[1] >= H) continue;
+                const int m = p[1] * W + p[0];
+                if (label[std::size_t(m)] < 0 && f.cellDistance(p[0], p[1]) > fc.vehicle().width / 2)
+                {
+                    label[std::size_t(m)] = labels;
+                    q.push_back(m);
+                }
+            }
+        }
+        ++labels;
+    }
+    std::vector<int> ok;
+    const double rOut = fc.vehicle().circumscribedRadius();
+    for (int k = 0; k < W * H; ++k)
+        if (label[std::size_t(k)] >= 0 && f.cellDistance(k % W, k / W) - h > rOut) ok.push_back(k);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<std::size_t> pick(0, ok.empty() ? 0 : ok.size() - 1);
+    std::vector<std::pair<Pose2, Pose2>> out;
+    for (int tries = 0; int(out.size()) < n && tries < 1000000 && !ok.empty(); ++tries)
+    {
+        const int a = ok[pick(rng)], b = ok[pick(rng)];
+        if (label[std::size_t(a)] != label[std::size_t(b)]) continue;
+        const Pose2 s{g.cellCenterX(a % W), g.cellCenterY(a / W), 0.0}, t{g.cellCenterX(b % W), g.cellCenterY(b / W), 0.0};
+        const double d = std::hypot(t.x - s.x, t.y - s.y);
+        if (d < lo || d > hi) continue;
+        out.push_back({s, t});
+    }
+    return out;
+}
+
+struct Row
+{
+    std::string label;
+    int runs{0}, solved{0}, drivable{0};
+    std::vector<double> times, lengths, drive;
+};
+
+/// OMPL's BIT* on a Reeds-Shepp space (radius R_min), gridcar's footprint checker as the
+/// validity checker, motions checked every 2 cm along the curve.
+struct RsResult
+{
+    bool solved{false};
+    double length{0}, drive{0};
+};
+RsResult bitstarReedsShepp(const FootprintChecker &fc, const Pose2 &s, const Pose2 &t, double limit)
+{
+    const OccupancyGrid &g = fc.grid();
+    auto space = std::make_shared<ompl::base::ReedsSheppStateSpace>(fc.vehicle().minTurningRadius());
+    ompl::base::RealVectorBounds b(2);
+    b.setLow(0, g.originX());
+    b.setHigh(0, g.originX() + g.sizeX());
+    b.setLow(1, g.originY());
+    b.setHigh(1, g.originY() + g.sizeY());
+    space->setBounds(b);
+    ompl::geometric::SimpleSetup ss(space);
+    ss.setStateValidityChecker([&fc](const ompl::base::State *st) {
+        const auto *p = st->as<ompl::base::SE2StateSpace::StateType>();
+        return fc.isValid(p->getX(), p->getY(), p->getYaw());
+    });
+    ss.getSpaceInformation()->setStateValidityCheckingResolution(0.02 / space->getMaximumExtent());
+    ompl::base::ScopedState<> a(space), z(space);
+    a[0] = s.x, a[1] = s.y, a[2] = s.yaw;
+    z[0] = t.x, z[1] = t.y, z[2] = t.yaw;
+    ss.setStartAndGoalStates(a, z);
+    ss.setPlanner(std::make_shared<ompl::geometric::BITstar>(ss.getSpaceInformation()));
+    RsResult r;
+    if (ss.solve(limit) != ompl::base::PlannerStatus::EXACT_SOLUTION) return r;
+    auto path = ss.getSolutionPath();
+    r.solved = true;
+    r.length = path.length();
+    path.interpolate(std::max<unsigned>(2, unsigned(r.length / 0.05)));
+    std::vector<Pose2> poses;
+    for (auto *st : path.getStates())
+    {
+        const auto *p = st->as<ompl::base::SE2StateSpace::StateType>();
+        poses.push_back({p->getX(), p->getY(), p->getYaw()});
+    }
+    r.drive = drivingTime(poses, fc.vehicle());
+    return r;
+}
+
+void printRows(const std::vector<Row> &rows)
+{
+    std::printf("| planner | solved | drivable | solve() median / p90 / max (ms) | mean length (m) | mean driving time (s) |\n");
+    std::printf("|---|---|---|---|---|---|\n");
+    for (const Row &r : rows)
+    {
+        double len = 0, dr = 0;
+        for (double v : r.lengths) len += v;
+        for (double v : r.drive) dr += v;
+        const double k = r.lengths.empty() ? NAN : 1.0 / double(r.lengths.size());
+        std::printf("| %s | %d/%d | %d/%d | %.1f / %.1f / %.1f | %.1f | %.1f |\n", r.label.c_str(), r.solved, r.runs,
+                    r.drivable, r.runs, 1e3 * quantile(r.times, 0.5), 1e3 * quantile(r.times, 0.9),
+                    1e3 * quantile(r.times, 1.0), len * k, dr * k);
+    }
+    std::fflush(stdout);
+}
+
+struct Options
+{
+    std::string map{"../shared/maps/ros/tsudanuma_campus/tsudanuma_all.yaml"};
+    std::vector<std::string> vehicles{"paper-i", "paper-c-car"};
+    int pairs{20};
+    unsigned seed{1};
+    double limit{10.0};
+    int bitstarPairs{5};
+    double bitstarTime{10.0};
+    int campusPairs{20};
+};
+
+const std::vector<std::pair<std::string, PlannerParams>> kPlanners = {
+    {"improved-astar", {{"mode", "paper"}}},
+    {"improved-astar", {{"mode", "integral"}}},
+    {"corner-astar", {}},
+};
+
+std::string labelOf(const std::string &name, const PlannerParams &p)
+{
+    std::string s = name;
+    for (const auto &kv : p) s += " " + kv.first + "=" + kv.second;
+    return s;
+}
+
+/// One query of @p planner; fills @p row.
+QueryResult runOne(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &s, const Pose2 &t,
+                   double limit, Row &row)
+{
+    QueryResult r = runQuery(setup, planner, s, t, limit);
+    ++row.runs;
+    row.times.push_back(r.seconds);
+    if (r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)
+    {
+        ++row.solved;
+        row.lengths.push_back(r.metrics.length);
+        row.drive.push_back(drivingTime(r.path, setup.checker->vehicle()));
+        if (r.drivability.drivable) ++row.drivable;
+    }
+    return r;
+}
+
+/// Start yaw at which the car fits (the planners choose their own heading: free_start_heading).
+Pose2 withFittingYaw(const FootprintChecker &fc, Pose2 p)
+{
+    double yaw = 0;
+    fc.fitsAtSomeHeading(p.x, p.y, 72, &yaw);
+    p.yaw = yaw;
+    return p;
+}
+
+void nativeMap(const Options &o)
+{
+    for (const std::string &vname : o.vehicles)
+    {
+        const VehicleParams v = VehicleParams::preset(vname);
+        const double rss0 = peakRssMb();
+        auto t0 = std::chrono::steady_clock::now();
+        auto grid = std::make_shared<const OccupancyGrid>(loadMap(o.map));
+        GridSetup setup = makeGridSetup(grid, v);
+        const double setupSec = seconds(t0);
+        std::fprintf(stderr, "%s: set-up %.2f s\n", vname.c_str(), setupSec);
+        const auto pairs = randomPairs(*setup.checker, o.pairs, o.seed, 60.0, 250.0);
+        std::vector<Row> rows;
+        std::vector<std::pair<Pose2, Pose2>> posesForBit;
+        for (const auto &[name, params] : kPlanners)
+        {
+            PlannerConfig cfg{name, params, true, false};
+            auto planner = configurePlanner(setup.ss->getSpaceInformation(), cfg);
+            Row row{labelOf(name, params)};
+            for (std::size_t k = 0; k < pairs.size(); ++k)
+            {
+                const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), t = withFittingYaw(*setup.checker, pairs[k].second);
+                const QueryResult r = runOne(setup, planner, s, t, o.limit, row);
+                std::fprintf(stderr, "  %s pair %zu: %s %.3f s %s\n", row.label.c_str(), k, r.status.asString().c_str(),
+                             r.seconds, r.drivability.drivable ? "drivable" : r.drivability.reason.c_str());
+                if (name == "improved-astar" && params[0].second == "integral" && int(k) < o.bitstarPairs && !r.path.empty() &&
+                    r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)
+                    posesForBit.push_back({r.path.front(), r.path.back()});
+            }
+            rows.push_back(row);
+        }
+        std::printf("\n### %s, %s (%zu pairs, limit %.0f s, set-up %.2f s, peak RSS %.0f MB -> %.0f MB)\n\n", o.map.c_str(),
+                    vname.c_str(), pairs.size(), o.limit, setupSec, rss0, peakRssMb());
+        printRows(rows);
+        if (posesForBit.empty()) continue;
+        std::printf("\nBIT* on Reeds-Shepp (R_min %.2f m), %.0f s, same poses as improved-astar integral's path:\n\n",
+                    v.minTurningRadius(), o.bitstarTime);
+        std::printf("| pair | BIT* length (m) | BIT* driving time (s) | ours length / BIT* | ours driving time / BIT* |\n|---|---|---|---|---|\n");
+        const Row &ours = rows[1];
+        for (std::size_t k = 0; k < posesForBit.size(); ++k)
+        {
+            const RsResult b = bitstarReedsShepp(*setup.checker, posesForBit[k].first, posesForBit[k].second, o.bitstarTime);
+            if (!b.solved)
+            {
+                std::printf("| %zu | not solved | | | |\n", k);
+                continue;
+            }
+            std::printf("| %zu | %.1f | %.1f | %.3f | %.3f |\n", k, b.length, b.drive, ours.lengths[k] / b.length,
+                        ours.drive[k] / b.drive);
+            std::fflush(stdout);
+        }
+    }
+}
+
+void campus(const Options &o)
+{
+    auto grid = std::make_shared<const OccupancyGrid>(generateCampus());
+    GridSetup setup = makeGridSetup(grid, VehicleParams::preset("paper-i"));
+    const auto pairs = randomPairs(*setup.checker, o.campusPairs, o.seed, 20.0, 150.0);
+    std::vector<Row> rows;
+    for (const char *mode : {"paper", "integral"})
+        for (const char *lattice : {"grid", "car"})
+        {
+            PlannerParams params{{"mode", mode}, {"lattice", lattice}};
+            auto planner = configurePlanner(setup.ss->getSpaceInformation(), {"improved-astar", params, true, false});
+            Row row{labelOf("improved-astar", params)};
+            for (const auto &[s0, t0] : pairs)
+                runOne(setup, planner, withFittingYaw(*setup.checker, s0), withFittingYaw(*setup.checker, t0), o.limit, row);
+            rows.push_back(row);
+        }
+    std::printf("\n### embedded campus (0.298 m), paper-i, %zu pairs 20-150 m\n\n", pairs.size());
+    printRows(rows);
+    std::printf("\nmedian solve() time, car lattice / grid lattice: paper %.3f, integral %.3f\n",
+                quantile(rows[1].times, 0.5) / quantile(rows[0].times, 0.5),
+                quantile(rows[3].times, 0.5) / quantile(rows[2].times, 0.5));
+}
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    Options o;
+    CLI::App app{"Car-lattice benchmark on a real map at its native resolution (see docs/performance.md)"};
+    app.add_option("--map", o.map, "ROS map (.yaml) or any map gridcar reads")->capture_default_str();
+    app.add_option("--vehicle", o.vehicles, "vehicle presets")->capture_default_str();
+    app.add_option("--pairs", o.pairs, "random start / goal pairs per vehicle")->capture_default_str();
+    app.add_option("--seed", o.seed, "random seed of the pairs")->capture_default_str();
+    app.add_option("--time-limit", o.limit, "solve() limit per query, s")->capture_default_str();
+    app.add_option("--bitstar-pairs", o.bitstarPairs, "pairs also given to BIT* on Reeds-Shepp (0: none)")->capture_default_str();
+    app.add_option("--bitstar-time", o.bitstarTime, "BIT*'s time per pair, s")->capture_default_str();
+    app.add_option("--campus-pairs", o.campusPairs, "pairs on the embedded campus (0: skip)")->capture_default_str();
+    CLI11_PARSE(app, argc, argv);
+    try
+    {
+        if (o.pairs > 0) nativeMap(o);
+        if (o.campusPairs > 0) campus(o);
+    }
+    catch (const std::exception &e)
+    {
+        std::fprintf(stderr, "bench_native: %s\n", e.what());
+        return 2;
+    }
+    return 0;
+}

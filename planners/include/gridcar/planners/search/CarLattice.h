@@ -1,0 +1,91 @@
+#pragma once
+/// @file CarLattice.h
+/// @brief The car lattice: nodes on a square grid of its own cell size (not the map's), a few
+/// headings that are directions of lattice vectors, and motion primitives of bounded curvature
+/// that join node to node exactly.
+
+#include "gridcar/core/Pose2.h"
+
+#include <array>
+
+#include <vector>
+
+namespace gridcar
+{
+/// How to build a CarLattice.
+struct CarLatticeConfig
+{
+    double cell{0.5};        ///< m between lattice nodes
+    int headings{16};        ///< 8 or 16
+    double turnRadius{2.0};  ///< m, radius of every turning arc (>= the vehicle's R_min)
+    double spacing{0.05};    ///< m: no body point moves more than this between two sampled poses
+    double reach{0.0};       ///< m, farthest body point from the reference point (VehicleParams)
+};
+
+/// One motion primitive from a node at heading `from` (lattice frame, start at the origin).
+struct LatticePrimitive
+{
+    int di{0}, dj{0};   ///< end node offset in lattice cells (i along x, j along y)
+    int from{0}, to{0};  ///< start and end heading
+    double length{0.0};  ///< m, arc length
+    double turn{0.0};    ///< rad, signed heading change (0 for a straight)
+    /// Poses along it, relative to the start node, spaced so that no body point moves more than
+    /// the configured spacing between two of them; the start pose excluded, the end included.
+    std::vector<Pose2> samples;
+};
+
+/**
+ * @brief A state lattice for a car, in the style of the state-lattice planners (Pivtoraiko and
+ * Kelly; Nav2's Smac lattice planner): states are (node i, node j, heading h).
+ *
+ * Headings are the directions of the lattice vectors (1,0), (1,1) and their rotations (8), plus
+ * (2,1), (1,2) and theirs (16): a straight primitive moves by one such vector and lands on a node
+ * again. A turn primitive changes the heading by one step (45 degrees, or 18.4 / 26.6 degrees
+ * with 16 headings): straight s1, an arc of radius turnRadius, straight s2, with s1, s2 >= 0
+ * chosen (the shortest such curve whose end is a node) so that it ends exactly on a node. Every
+ * primitive therefore has curvature 0 or 1 / turnRadius, headings join without a kink, and a
+ * path of primitives is drivable by a car whose R_min <= turnRadius wherever its footprint is
+ * free.
+ *
+ * Collision checking: margin() = spacing / 2. Between two consecutive samples no body point moves
+ * more than spacing, so every intermediate rectangle lies inside the rectangle of one of the two
+ * samples grown by margin(): checking the grown rectangle at the samples certifies the swept
+ * motion (FootprintChecker::isValidInflated).
+ *
+ * @par External documentation
+ * M. Pivtoraiko, R. A. Knepper, A. Kelly, "Differentially constrained mobile robot motion
+ * planning in state lattices", J. Field Robotics 2009. Nav2 Smac planner (state lattice).
+ */
+class CarLattice
+{
+public:
+    /// Throws std::invalid_argument for a cell, radius or spacing that is not finite and
+    /// positive, or headings other than 8 and 16.
+    explicit CarLattice(const CarLatticeConfig &config);
+
+    const CarLatticeConfig &config() const { return config_; }
+    int headings() const { return config_.headings; }
+    double cell() const { return config_.cell; }
+    /// Lattice vector of heading h (in cells) and its yaw in the lattice frame.
+    int vi(int h) const { return vec_[h][0]; }
+    int vj(int h) const { return vec_[h][1]; }
+    double yaw(int h) const { return yaw_[h]; }
+    /// The heading nearest to a lattice-frame yaw.
+    int nearestHeading(double yaw) const;
+    const std::vector<LatticePrimitive> &primitives(int h) const { return prims_[h]; }
+    double margin() const { return config_.spacing / 2; }
+    /// The neighbour steps of the 2D heuristic grid: the headings' lattice vectors.
+    int neighbourCount() const { return config_.headings; }
+
+private:
+    void addStraight(int h);
+    bool addTurn(int h, int dir);
+    void sample(LatticePrimitive &p, double s1) const;
+
+    CarLatticeConfig config_;
+    std::vector<std::array<int, 2>> vec_;
+    std::vector<double> yaw_;
+    std::vector<std::vector<LatticePrimitive>> prims_;
+};
+
+}  // namespace gridcar

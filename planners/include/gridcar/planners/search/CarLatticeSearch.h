@@ -1,0 +1,160 @@
+#pragma once
+/// @file CarLatticeSearch.h
+/// @brief A* on the car lattice (search/CarLattice.h) through the shared search core: footprint
+/// checks of every primitive, the obstacle-aware heuristic, an analytic Dubins shot to the exact
+/// goal, and a pluggable cost model (improved A*'s and corner A*'s costs on the same successors).
+
+#include "gridcar/collision/FootprintChecker.h"
+#include "gridcar/planners/search/AStar.h"
+#include "gridcar/planners/search/CarLattice.h"
+#include "gridcar/planners/search/ObstacleHeuristic.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace gridcar
+{
+/// The cost of driving along the lattice; the search core orders states by g + h unless
+/// customPriority().
+class LatticeCostModel
+{
+public:
+    virtual ~LatticeCostModel() = default;
+    /// Cost of the motion through world poses @p samples (after @p from; the last one is the
+    /// end), @p length metres long, turning by @p absTurn radians in total.
+    virtual double stepCost(const Pose2 &from, const std::vector<Pose2> &samples, double length,
+                            double absTurn) const = 0;
+    /// A lower bound of stepCost() per metre driven (the heuristic's distances are scaled by it).
+    virtual double minCostPerMetre() const { return 1.0; }
+    /// Cost per metre near a pose, for the obstacle-aware heuristic's edges (an edge costs its
+    /// length x the smaller weight of its two nodes). Default: minCostPerMetre().
+    virtual double nodeWeight(const Pose2 &p) const { (void)p; return minCostPerMetre(); }
+    /// True if nodeWeight() varies (the 2D search then weighs its edges).
+    virtual bool weighted() const { return false; }
+    /// Paper I's evaluation: order the open list by priority() instead of g + h.
+    virtual bool customPriority() const { return false; }
+    virtual double priority(double g, double h, const Pose2 &at) const { (void)at; return g + h; }
+};
+
+/// Path length as the cost.
+class LengthCost : public LatticeCostModel
+{
+public:
+    double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double) const override { return length; }
+};
+
+/// One query on the car lattice, in world terms.
+struct CarLatticeQuery
+{
+    Pose2 start;
+    bool freeStartHeading{false};  ///< start at any lattice heading where the car fits
+    /// The goal position the heuristic aims at and the Dubins shot reaches exactly (when shoot).
+    Pose2 goal;
+    bool shoot{true};
+    double goalYawTolerance{-1.0};  ///< rad: < 0 any heading, 0 exactly goal.yaw, > 0 within it
+    /// Goal test of a lattice node (empty: only the shot reaches the goal).
+    std::function<bool(const Pose2 &)> inGoal;
+    /// False when `goal` is no target at all (a goal region that cannot be sampled): no
+    /// heuristic then (Dijkstra order), and no shot.
+    bool aim{true};
+};
+
+/// What a search on the car lattice found.
+struct CarLatticeResult
+{
+    SearchOutcome outcome{SearchOutcome::Exhausted};
+    bool exact{false};          ///< the path ends in the goal
+    std::vector<Pose2> path;    ///< dense world poses (spacing <= the lattice's), start first
+    double cost{0.0};           ///< of the path, by the cost model
+    std::uint64_t expanded{0};
+    std::size_t states{0};      ///< lattice states generated
+    std::size_t heuristicNodes{0};  ///< 2D nodes the obstacle-aware heuristic closed
+    int shotsTried{0};
+};
+
+/**
+ * @brief A* over (node, heading) states of a CarLattice laid over the map with its origin at
+ * the start position and its x axis along the start yaw (the start is always a node, whatever
+ * its pose); collision is checked against the map's own cells at every sampled pose with the
+ * rectangle grown by CarLattice::margin() (so the swept motion is certified), mostly by the
+ * distance field's disc cover (FootprintChecker).
+ *
+ * Heuristic: max(Euclidean distance x the cost model's least cost per metre, ObstacleHeuristic
+ * distance (edges weighted by the cost model's nodeWeight()) / ratio - seed radius), where ratio >= 1 is the largest ratio of the 2D graph's
+ * open-space distance to a primitive's length, measured on the lattice's own primitives. Where
+ * the 2D graph does not join start and goal, the Euclidean part alone is used, so the search
+ * still returns the explored state nearest the goal (an approximate solution) rather than
+ * trusting a relaxation to prove the goal unreachable.
+ * Goal: a node passing inGoal, or a Dubins curve (radius = the lattice's turning radius) from
+ * the node to the goal position whose footprint is free: tried at every expansion within 2 R +
+ * 2 cells of the goal and at every 8th within 30 R; with a free goal heading the end yaws tried
+ * are the lattice headings and the bearing from the node. Closed states stay closed (each node
+ * keeps the primitive it was first expanded with), as in Hybrid A*.
+ */
+class CarLatticeSearch
+{
+public:
+    CarLatticeSearch(const FootprintChecker &checker, std::shared_ptr<const CarLattice> lattice);
+    ~CarLatticeSearch();
+
+    const CarLattice &lattice() const { return *lattice_; }
+    /// Largest open-space 2D-graph distance over primitive length (>= 1).
+    double heuristicRatio() const { return ratio_; }
+
+    CarLatticeResult run(const CarLatticeQuery &q, const LatticeCostModel &cost, const std::function<bool()> &cancelled,
+                         std::uint64_t *progress = nullptr);
+
+    /// The heuristic of the last run() at a node of its lattice at heading h (world pose out).
+    double heuristicAt(int i, int j);
+    /// World pose of lattice node (i, j) at heading h in the last run()'s frame.
+    Pose2 nodePose(int i, int j, int h) const;
+    /// Calls fn(node, parent) for every state the last run() expanded (the start: parent = node).
+    void forEachExpanded(const std::function<void(const Pose2 &, const Pose2 &)> &fn) const;
+    /// True if the motion from @p from through the world poses @p poses is free: the
+    /// rectangle grown by the lattice's margin at every pose (see CarLattice).
+    bool motionFree(const Pose2 &from, const std::vector<Pose2> &poses) const;
+    /// The same for poses 1..n given by @p poseAt (computed only where needed).
+    bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const;
+
+private:
+    friend struct CarExpander;
+    struct Key
+    {
+        int i, j, h;
+    };
+    std::uint64_t pack(int i, int j, int h) const;
+    Key unpack(std::uint64_t k) const;
+    std::uint32_t intern(int i, int j, int h);
+    void setFrame(const CarLatticeQuery &q);
+    bool fitsAtNode(int i, int j) const;
+    bool tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions);
+    std::vector<Pose2> worldSamples(int i, int j, const LatticePrimitive &p) const;
+    std::vector<Pose2> buildPath(std::uint32_t end) const;
+    double measureRatio() const;
+
+    const FootprintChecker &checker_;
+    std::shared_ptr<const CarLattice> lattice_;
+    double ratio_{1.0};
+    // the last run's frame, states and heuristic
+    double ox_{0}, oy_{0}, phi_{0}, cphi_{1}, sphi_{0};
+    int i0_{0}, j0_{0}, ni_{1}, nj_{1};
+    CarLatticeQuery query_;
+    std::unique_ptr<ObstacleHeuristic> h2d_;
+    bool use2d_{true};  ///< false when the 2D graph cannot join start and goal (Euclid alone then)
+    double seedRadius_{0};
+    std::unordered_map<std::uint64_t, std::uint32_t> ids_;
+    std::vector<std::uint64_t> keys_;
+    std::vector<std::int16_t> prim_;  ///< primitive that reached each state (-1: a start state)
+    HashSearchSpace space_;
+    std::uint32_t shotFrom_{SearchSpace::kNoParent};
+    std::vector<Pose2> shot_;
+    double shotCost_{0};
+    int shotsTried_{0};
+    struct Dubins;
+    std::unique_ptr<Dubins> dubins_;
+};
+
+}  // namespace gridcar

@@ -1,0 +1,149 @@
+#include "gridcar/planners/search/CarLattice.h"
+
+#include "gridcar/core/Angles.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace gridcar
+{
+namespace
+{
+bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+}  // namespace
+
+CarLattice::CarLattice(const CarLatticeConfig &config) : config_(config)
+{
+    if (!positive(config.cell)) throw std::invalid_argument("car lattice: cell size must be a finite number > 0");
+    if (!positive(config.turnRadius)) throw std::invalid_argument("car lattice: turning radius must be a finite number > 0");
+    if (!positive(config.spacing)) throw std::invalid_argument("car lattice: sample spacing must be a finite number > 0");
+    if (!(std::isfinite(config.reach) && config.reach >= 0.0))
+        throw std::invalid_argument("car lattice: vehicle reach must be a finite number >= 0");
+    if (config.headings != 8 && config.headings != 16)
+        throw std::invalid_argument("car lattice: headings must be 8 or 16 (directions of lattice vectors), got " +
+                                    std::to_string(config.headings));
+    // first-quadrant vectors, counter-clockwise; the others are their rotations by 90 degrees
+    const std::vector<std::array<int, 2>> quadrant =
+        config.headings == 8 ? std::vector<std::array<int, 2>>{{1, 0}, {1, 1}} :
+                               std::vector<std::array<int, 2>>{{1, 0}, {2, 1}, {1, 1}, {1, 2}};
+    for (int q = 0; q < 4; ++q)
+        for (auto v : quadrant)
+        {
+            for (int k = 0; k < q; ++k) v = {-v[1], v[0]};
+            vec_.push_back(v);
+            yaw_.push_back(std::atan2(double(v[1]), double(v[0])));
+        }
+    prims_.resize(std::size_t(config.headings));
+    for (int h = 0; h < config.headings; ++h)
+    {
+        addStraight(h);
+        for (int dir : {1, -1})
+            if (!addTurn(h, dir)) throw std::logic_error("car lattice: no turn primitive found");
+    }
+}
+
+int CarLattice::nearestHeading(double yaw) const
+{
+    int best = 0;
+    double bestD = std::numeric_limits<double>::infinity();
+    for (int h = 0; h < headings(); ++h)
+    {
+        const double d = std::abs(wrapAngle(yaw - yaw_[h]));
+        if (d < bestD)
+        {
+            bestD = d;
+            best = h;
+        }
+    }
+    return best;
+}
+
+void CarLattice::addStraight(int h)
+{
+    LatticePrimitive p;
+    p.di = vec_[h][0];
+    p.dj = vec_[h][1];
+    p.from = p.to = h;
+    p.length = config_.cell * std::hypot(double(p.di), double(p.dj));
+    sample(p, p.length);
+    prims_[h].push_back(std::move(p));
+}
+
+bool CarLattice::addTurn(int h, int dir)
+{
+    const int n = headings();
+    const int to = ((h + dir) % n + n) % n;
+    const double t1 = yaw_[h], t2 = yaw_[to];
+    const double delta = wrapAngle(t2 - t1);  // signed, |delta| < 90 degrees
+    const double R = config_.turnRadius, c = config_.cell, sg = delta > 0 ? 1.0 : -1.0;
+    // displacement of the arc alone (curvature sg / R from yaw t1 to t2)
+    const double ax = sg * R * (std::sin(t2) - std::sin(t1)), ay = sg * R * (std::cos(t1) - std::cos(t2));
+    const double u1x = std::cos(t1), u1y = std::sin(t1), u2x = std::cos(t2), u2y = std::sin(t2);
+    const double det = u1x * u2y - u1y * u2x;
+    const int W = int(std::ceil((2 * R + 3 * c) / c)) + 2;
+    LatticePrimitive best;
+    double bestLen = std::numeric_limits<double>::infinity(), bestS1 = 0;
+    for (int i = -W; i <= W; ++i)
+        for (int j = -W; j <= W; ++j)
+        {
+            const double rx = i * c - ax, ry = j * c - ay;
+            const double s1 = (rx * u2y - ry * u2x) / det, s2 = (u1x * ry - u1y * rx) / det;
+            if (s1 < -1e-9 || s2 < -1e-9) continue;
+            const double len = std::max(s1, 0.0) + std::max(s2, 0.0) + R * std::abs(delta);
+            if (len < bestLen - 1e-9)
+            {
+                bestLen = len;
+                best.di = i;
+                best.dj = j;
+                bestS1 = std::max(s1, 0.0);
+            }
+        }
+    if (!std::isfinite(bestLen)) return false;
+    best.from = h;
+    best.to = to;
+    best.length = bestLen;
+    best.turn = delta;
+    sample(best, bestS1);
+    prims_[h].push_back(std::move(best));
+    return true;
+}
+
+void CarLattice::sample(LatticePrimitive &p, double s1) const
+{
+    const double t1 = yaw_[p.from], R = config_.turnRadius;
+    const double arc = R * std::abs(p.turn), sg = p.turn > 0 ? 1.0 : -1.0;
+    const double travel = arc > 0 ? p.length * (1.0 + config_.reach / R) : p.length;
+    const int n = std::max(1, int(std::ceil(travel / config_.spacing - 1e-9)));
+    const double u1x = std::cos(t1), u1y = std::sin(t1);
+    const double t2 = t1 + p.turn;
+    const double ax = arc > 0 ? sg * R * (std::sin(t2) - std::sin(t1)) : 0.0;
+    const double ay = arc > 0 ? sg * R * (std::cos(t1) - std::cos(t2)) : 0.0;
+    // arc-length parameter at n points; the straight parts move points by ds, the arc by at most
+    // ds (1 + reach / R): n was chosen from the larger so every step stays under the spacing
+    p.samples.clear();
+    for (int k = 1; k <= n; ++k)
+    {
+        const double s = p.length * k / n;
+        Pose2 q;
+        if (s <= s1)
+            q = {s * u1x, s * u1y, t1};
+        else if (s <= s1 + arc)
+        {
+            const double phi = t1 + sg * (s - s1) / R;
+            q = {s1 * u1x + sg * R * (std::sin(phi) - std::sin(t1)), s1 * u1y + sg * R * (std::cos(t1) - std::cos(phi)),
+                 phi};
+        }
+        else
+        {
+            const double e = s - s1 - arc;
+            q = {s1 * u1x + ax + e * std::cos(t2), s1 * u1y + ay + e * std::sin(t2), t2};
+        }
+        p.samples.push_back(q);
+    }
+    // the end is exactly the node (rounding of the parametrisation)
+    p.samples.back() = {p.di * config_.cell, p.dj * config_.cell, yaw_[p.to]};
+}
+
+}  // namespace gridcar

@@ -1,0 +1,203 @@
+/// @file CarLatticeExpand.cpp
+/// @brief CarLatticeSearch::run(): the expander the search core drives, the Dubins shot to the
+/// goal and the path out of the search tree.
+#include "gridcar/planners/search/CarLatticeSearch.h"
+
+#include "gridcar/core/Angles.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <limits>
+
+namespace gridcar
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+/// Successors of a car-lattice state: its heading's primitives whose grown footprint is free.
+struct CarExpander
+{
+    CarLatticeSearch &S;
+    const LatticeCostModel &cost;
+    std::uint64_t expansions{0};
+
+    Pose2 poseOf(std::uint32_t s) const
+    {
+        const auto k = S.unpack(S.keys_[s]);
+        return S.nodePose(k.i, k.j, k.h);
+    }
+    double hNode(int i, int j) const
+    {
+        if (!S.query_.aim) return 0.0;
+        const Pose2 p = S.nodePose(i, j, 0);
+        const double e = std::hypot(S.query_.goal.x - p.x, S.query_.goal.y - p.y);
+        const double m = cost.minCostPerMetre();
+        if (!S.use2d_) return m * e;
+        const double d = S.h2d_->distance(i, j);
+        if (d == kInf) return kInf;
+        const double graph = d < 0 ? 0.0 : d / S.ratio_ - S.seedRadius_ * m;
+        return std::max(m * e, graph);
+    }
+    double heuristic(std::uint32_t s) const
+    {
+        const auto k = S.unpack(S.keys_[s]);
+        return hNode(k.i, k.j);
+    }
+    bool isGoal(std::uint32_t s)
+    {
+        ++expansions;
+        if (S.query_.inGoal && S.query_.inGoal(poseOf(s))) return true;
+        return S.query_.shoot && S.query_.aim && S.tryShot(s, cost, expansions);
+    }
+    template <class Emit>
+    void successors(std::uint32_t s, Emit &&emit)
+    {
+        const auto k = S.unpack(S.keys_[s]);
+        const Pose2 from = S.nodePose(k.i, k.j, k.h);
+        const auto &prims = S.lattice_->primitives(k.h);
+        for (std::size_t p = 0; p < prims.size(); ++p)
+        {
+            const LatticePrimitive &prim = prims[p];
+            const int ni = k.i + prim.di, nj = k.j + prim.dj;
+            if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
+            const std::vector<Pose2> samples = S.worldSamples(k.i, k.j, prim);
+            if (!S.motionFree(from, samples)) continue;
+            const double hn = hNode(ni, nj);
+            if (hn == kInf) continue;
+            const std::uint32_t id = S.intern(ni, nj, prim.to);
+            const double c = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+            emit(id, c, [this, id, p, hn] {
+                S.prim_[id] = std::int16_t(p);
+                return hn;
+            });
+        }
+    }
+};
+
+namespace
+{
+/// Paper I's ordering (LatticeCostModel::customPriority()).
+struct PriorityExpander : CarExpander
+{
+    double priority(double g, double h, std::uint32_t s) const { return cost.priority(g, h, poseOf(s)); }
+};
+}  // namespace
+
+std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
+{
+    std::vector<std::uint32_t> chain;
+    for (std::uint32_t s = end; s != SearchSpace::kNoParent; s = space_.parent(s)) chain.push_back(s);
+    std::reverse(chain.begin(), chain.end());
+    const auto k0 = unpack(keys_[chain.front()]);
+    Pose2 start = nodePose(k0.i, k0.j, k0.h);
+    start.x = query_.start.x;
+    start.y = query_.start.y;
+    std::vector<Pose2> path{start};
+    for (std::size_t n = 1; n < chain.size(); ++n)
+    {
+        const auto kp = unpack(keys_[chain[n - 1]]);
+        const LatticePrimitive &p = lattice_->primitives(kp.h)[std::size_t(prim_[chain[n]])];
+        const std::vector<Pose2> w = worldSamples(kp.i, kp.j, p);
+        path.insert(path.end(), w.begin(), w.end());
+    }
+    if (shotFrom_ == end) path.insert(path.end(), shot_.begin(), shot_.end());
+    return path;
+}
+
+CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCostModel &cost,
+                                       const std::function<bool()> &cancelled, std::uint64_t *progress)
+{
+    setFrame(q);
+    const FootprintChecker::Stats st0 = checker_.stats();
+    CarLatticeResult out;
+    const double c = lattice_->cell();
+    std::vector<std::array<int, 2>> steps;
+    for (int h = 0; h < lattice_->headings(); ++h) steps.push_back({lattice_->vi(h), lattice_->vj(h)});
+    h2d_ = std::make_unique<ObstacleHeuristic>(i0_, j0_, ni_, nj_, steps, c, [this](int i, int j) { return fitsAtNode(i, j); });
+    h2d_->setCancel(cancelled);
+    if (cost.weighted()) h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });
+    // seeds: the nodes round the goal, at their straight-line distance
+    const double gx = cphi_ * (q.goal.x - ox_) + sphi_ * (q.goal.y - oy_), gy = -sphi_ * (q.goal.x - ox_) + cphi_ * (q.goal.y - oy_);
+    seedRadius_ = 1.5 * c;
+    std::vector<std::pair<std::array<int, 2>, double>> seeds;
+    for (int i = int(std::floor(gx / c)) - 1; i <= int(std::ceil(gx / c)) + 1; ++i)
+        for (int j = int(std::floor(gy / c)) - 1; j <= int(std::ceil(gy / c)) + 1; ++j)
+        {
+            const double d = std::hypot(i * c - gx, j * c - gy);
+            if (d <= seedRadius_) seeds.push_back({{i, j}, d});
+        }
+    h2d_->reset(seeds, 0, 0);
+    use2d_ = q.aim;
+    if (use2d_ && h2d_->distance(0, 0) == kInf) use2d_ = false;
+    ids_.clear();
+    keys_.clear();
+    prim_.clear();
+    shotFrom_ = SearchSpace::kNoParent;
+    shot_.clear();
+    shotCost_ = 0;
+    shotsTried_ = 0;
+    std::vector<std::uint32_t> starts;
+    for (int h = 0; h < lattice_->headings(); ++h)
+        if (q.freeStartHeading ? checker_.isValid(nodePose(0, 0, h)) : h == 0) starts.push_back(intern(0, 0, h));
+    SearchResult res;
+    if (cost.customPriority())
+    {
+        PriorityExpander ex{{*this, cost}};
+        res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
+    }
+    else
+    {
+        CarExpander ex{*this, cost};
+        res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
+    }
+    out.outcome = res.outcome;
+    out.expanded = res.expanded;
+    out.states = keys_.size();
+    out.heuristicNodes = h2d_->closedCount();
+    out.shotsTried = shotsTried_;
+    if (std::getenv("GRIDCAR_DEBUG"))
+    {
+        const FootprintChecker::Stats st = checker_.stats();
+        std::fprintf(stderr, "car lattice: %llu expanded, %zu states, %zu 2D nodes, %d shots, ratio %.3f; checks: fast free %llu, "
+                     "fast hit %llu, discs %llu, FCL %llu\n",
+                     (unsigned long long)res.expanded, keys_.size(), h2d_->closedCount(), shotsTried_, ratio_,
+                     (unsigned long long)(st.fastFree - st0.fastFree), (unsigned long long)(st.fastCollision - st0.fastCollision),
+                     (unsigned long long)(st.discFree - st0.discFree), (unsigned long long)(st.exact - st0.exact));
+    }
+    const std::uint32_t end = res.outcome == SearchOutcome::Found ? res.goal : res.closest;
+    if (end == SearchSpace::kNoParent) return out;
+    out.exact = res.outcome == SearchOutcome::Found;
+    out.path = buildPath(end);
+    out.cost = space_.g(end) + (shotFrom_ == end ? shotCost_ : 0.0);
+    return out;
+}
+
+double CarLatticeSearch::heuristicAt(int i, int j)
+{
+    LengthCost len;
+    CarExpander ex{*this, len};
+    return ex.hNode(i, j);
+}
+
+void CarLatticeSearch::forEachExpanded(const std::function<void(const Pose2 &, const Pose2 &)> &fn) const
+{
+    space_.forEach([&](std::uint32_t s, bool closed) {
+        if (!closed) return;
+        const auto k = unpack(keys_[s]);
+        const Pose2 node = nodePose(k.i, k.j, k.h);
+        const std::uint32_t p = space_.parent(s);
+        if (p == SearchSpace::kNoParent)
+            fn(node, node);
+        else
+        {
+            const auto kp = unpack(keys_[p]);
+            fn(node, nodePose(kp.i, kp.j, kp.h));
+        }
+    });
+}
+
+}  // namespace gridcar

@@ -1,0 +1,266 @@
+#include "gridcar/planners/search/CarLatticeSearch.h"
+
+#include "gridcar/core/Angles.h"
+
+#include <ompl/base/spaces/DubinsStateSpace.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+namespace gridcar
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+/// OMPL's Dubins curves at the lattice's turning radius, with two scratch states.
+struct CarLatticeSearch::Dubins
+{
+    explicit Dubins(double r) : space(r)
+    {
+        a = space.allocState();
+        b = space.allocState();
+        c = space.allocState();
+    }
+    ~Dubins()
+    {
+        space.freeState(a);
+        space.freeState(b);
+        space.freeState(c);
+    }
+    static void set(ompl::base::State *s, const Pose2 &p)
+    {
+        auto *st = s->as<ompl::base::SE2StateSpace::StateType>();
+        st->setXY(p.x, p.y);
+        st->setYaw(p.yaw);
+    }
+    /// OMPL 1.5.2 keeps interpolation along a computed DubinsPath protected: made public here
+    struct Space : ompl::base::DubinsStateSpace
+    {
+        using ompl::base::DubinsStateSpace::DubinsStateSpace;
+        using ompl::base::DubinsStateSpace::interpolate;
+    };
+    Space space;
+    ompl::base::State *a, *b, *c;
+};
+
+CarLatticeSearch::CarLatticeSearch(const FootprintChecker &checker, std::shared_ptr<const CarLattice> lattice)
+  : checker_(checker), lattice_(std::move(lattice)), dubins_(std::make_unique<Dubins>(lattice_->config().turnRadius))
+{
+    ratio_ = measureRatio();
+}
+
+CarLatticeSearch::~CarLatticeSearch() = default;
+
+double CarLatticeSearch::measureRatio() const
+{
+    // open-space distances of the 2D graph (the headings' vectors both ways) from the origin
+    const CarLattice &L = *lattice_;
+    int W = 1;
+    for (int h = 0; h < L.headings(); ++h)
+        for (const auto &p : L.primitives(h)) W = std::max({W, std::abs(p.di), std::abs(p.dj)});
+    W += 3;
+    const int n = 2 * W + 1;
+    std::vector<double> dist(std::size_t(n) * n, kInf);
+    using E = std::pair<double, int>;
+    std::priority_queue<E, std::vector<E>, std::greater<E>> pq;
+    dist[std::size_t(W) * n + W] = 0;
+    pq.push({0.0, W * n + W});
+    while (!pq.empty())
+    {
+        const auto [d, k] = pq.top();
+        pq.pop();
+        if (d > dist[std::size_t(k)]) continue;
+        const int x = k % n, y = k / n;
+        for (int h = 0; h < L.headings(); ++h)
+        {
+            const int a = x + L.vi(h), b = y + L.vj(h);
+            if (a < 0 || b < 0 || a >= n || b >= n) continue;
+            const double nd = d + L.cell() * std::hypot(double(L.vi(h)), double(L.vj(h)));
+            if (nd < dist[std::size_t(b) * n + a])
+            {
+                dist[std::size_t(b) * n + a] = nd;
+                pq.push({nd, b * n + a});
+            }
+        }
+    }
+    double ratio = 1.0;
+    for (int h = 0; h < L.headings(); ++h)
+        for (const auto &p : L.primitives(h))
+            ratio = std::max(ratio, dist[std::size_t(p.dj + W) * n + (p.di + W)] / p.length);
+    return ratio;
+}
+
+std::uint64_t CarLatticeSearch::pack(int i, int j, int h) const
+{
+    return (std::uint64_t(i - i0_) * std::uint64_t(nj_) + std::uint64_t(j - j0_)) * std::uint64_t(lattice_->headings()) +
+           std::uint64_t(h);
+}
+
+CarLatticeSearch::Key CarLatticeSearch::unpack(std::uint64_t k) const
+{
+    const auto H = std::uint64_t(lattice_->headings());
+    const int h = int(k % H);
+    const std::uint64_t ij = k / H;
+    return {int(ij / std::uint64_t(nj_)) + i0_, int(ij % std::uint64_t(nj_)) + j0_, h};
+}
+
+std::uint32_t CarLatticeSearch::intern(int i, int j, int h)
+{
+    const std::uint64_t k = pack(i, j, h);
+    auto it = ids_.find(k);
+    if (it != ids_.end()) return it->second;
+    const auto id = std::uint32_t(keys_.size());
+    ids_.emplace(k, id);
+    keys_.push_back(k);
+    prim_.push_back(-1);
+    return id;
+}
+
+Pose2 CarLatticeSearch::nodePose(int i, int j, int h) const
+{
+    const double x = i * lattice_->cell(), y = j * lattice_->cell();
+    return {ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, wrapYaw(phi_ + lattice_->yaw(h))};
+}
+
+std::vector<Pose2> CarLatticeSearch::worldSamples(int i, int j, const LatticePrimitive &p) const
+{
+    std::vector<Pose2> out;
+    out.reserve(p.samples.size());
+    const double bx = i * lattice_->cell(), by = j * lattice_->cell();
+    for (const Pose2 &s : p.samples)
+    {
+        const double x = bx + s.x, y = by + s.y;
+        out.push_back({ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, wrapYaw(phi_ + s.yaw)});
+    }
+    return out;
+}
+
+bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
+{
+    // Blocks of kStride poses. A block whose two end poses the distance field alone proves free
+    // with the rectangle grown by kStride x margin is free (no body point moves more than
+    // kStride x spacing between them); otherwise each of its poses is checked exactly with the
+    // margin. In open space this takes a quarter of the lookups and never reaches FCL; it stops
+    // at the first pose in collision.
+    constexpr int kStride = 4;
+    const double m = lattice_->margin(), mc = kStride * m;
+    bool prevProven = checker_.provenFree(from, mc);
+    for (int b = 1; b <= n; b += kStride)
+    {
+        const int e = std::min(n, b + kStride - 1);
+        const bool endProven = checker_.provenFree(poseAt(e), mc);
+        if (!(prevProven && endProven))
+            for (int i = b; i <= e; ++i)
+                if (!checker_.isValidInflated(poseAt(i), m)) return false;
+        prevProven = endProven;
+    }
+    return true;
+}
+
+bool CarLatticeSearch::motionFree(const Pose2 &from, const std::vector<Pose2> &poses) const
+{
+    return curveFree(from, int(poses.size()), [&poses](int i) { return poses[std::size_t(i - 1)]; });
+}
+
+bool CarLatticeSearch::fitsAtNode(int i, int j) const
+{
+    // A relaxation, so that the heuristic stays a lower bound: false only where the distance
+    // field proves the car in collision at every lattice heading, true otherwise (no FCL).
+    const Pose2 p = nodePose(i, j, 0);
+    bool allBlocked = true;
+    for (int h = 0; h < lattice_->headings() && allBlocked; ++h)
+        allBlocked = checker_.quickVerdict({p.x, p.y, wrapYaw(phi_ + lattice_->yaw(h))}) == 0;
+    return !allBlocked;
+}
+
+void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
+{
+    query_ = q;
+    ox_ = q.start.x;
+    oy_ = q.start.y;
+    phi_ = q.freeStartHeading ? 0.0 : wrapYaw(q.start.yaw);
+    cphi_ = std::cos(phi_);
+    sphi_ = std::sin(phi_);
+    const OccupancyGrid &g = checker_.grid();
+    const double c = lattice_->cell();
+    double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf};
+    for (double wx : {g.originX(), g.originX() + g.sizeX()})
+        for (double wy : {g.originY(), g.originY() + g.sizeY()})
+        {
+            const double x = cphi_ * (wx - ox_) + sphi_ * (wy - oy_), y = -sphi_ * (wx - ox_) + cphi_ * (wy - oy_);
+            lo[0] = std::min(lo[0], x);
+            hi[0] = std::max(hi[0], x);
+            lo[1] = std::min(lo[1], y);
+            hi[1] = std::max(hi[1], y);
+        }
+    i0_ = int(std::floor(lo[0] / c)) - 1;
+    j0_ = int(std::floor(lo[1] / c)) - 1;
+    ni_ = int(std::ceil(hi[0] / c)) + 2 - i0_;
+    nj_ = int(std::ceil(hi[1] / c)) + 2 - j0_;
+}
+
+bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)
+{
+    const auto k = unpack(keys_[s]);
+    const Pose2 from = nodePose(k.i, k.j, k.h);
+    const Pose2 &g = query_.goal;
+    const double e = std::hypot(g.x - from.x, g.y - from.y);
+    const double R = lattice_->config().turnRadius, c = lattice_->cell();
+    if (e > 30 * R + 10 * c) return false;
+    if (e > 2 * R + 2 * c && expansions % 8 != 0) return false;
+    std::vector<double> yaws;
+    if (query_.goalYawTolerance < 0)
+    {
+        yaws.push_back(std::atan2(g.y - from.y, g.x - from.x));
+        for (int h = 0; h < lattice_->headings(); ++h) yaws.push_back(wrapYaw(phi_ + lattice_->yaw(h)));
+    }
+    else
+    {
+        yaws.push_back(g.yaw);
+        if (query_.goalYawTolerance > 0)
+            for (double d : {-query_.goalYawTolerance, query_.goalYawTolerance}) yaws.push_back(wrapYaw(g.yaw + d));
+    }
+    Dubins &D = *dubins_;
+    Dubins::set(D.a, from);
+    std::vector<std::pair<double, double>> cand;  // (length, yaw)
+    for (double y : yaws)
+    {
+        Dubins::set(D.b, {g.x, g.y, y});
+        const double len = D.space.distance(D.a, D.b);
+        if (len <= e + 2 * M_PI * R) cand.push_back({len, y});
+    }
+    std::sort(cand.begin(), cand.end());
+    if (cand.size() > 3) cand.resize(3);
+    for (const auto &[len, y] : cand)
+    {
+        ++shotsTried_;
+        Dubins::set(D.b, {g.x, g.y, y});
+        const auto path = D.space.dubins(D.a, D.b);
+        const int n = std::max(1, int(std::ceil(len * (1.0 + checker_.reach() / R) / lattice_->config().spacing)));
+        auto poseAt = [&](int i) {
+            D.space.interpolate(D.a, path, double(i) / n, D.c);
+            const auto *st = D.c->as<ompl::base::SE2StateSpace::StateType>();
+            return Pose2{st->getX(), st->getY(), wrapYaw(st->getYaw())};
+        };
+        const bool free = curveFree(from, n, poseAt);
+        if (!free) continue;
+        double turn = 0;
+        for (int seg = 0; seg < 3; ++seg)
+            if (path.type_[seg] != ompl::base::DubinsStateSpace::DUBINS_STRAIGHT) turn += path.length_[seg];
+        std::vector<Pose2> poses;
+        poses.reserve(std::size_t(n));
+        for (int i = 1; i <= n; ++i) poses.push_back(poseAt(i));
+        poses.back() = {g.x, g.y, y};
+        shot_ = std::move(poses);
+        shotFrom_ = s;
+        shotCost_ = cost.stepCost(from, shot_, len, turn);
+        return true;
+    }
+    return false;
+}
+
+}  // namespace gridcar
