@@ -182,6 +182,7 @@ struct Options
     int bitstarPairs{5};
     double bitstarTime{10.0};
     int campusPairs{20};
+    std::vector<int> only;  ///< indices into kPlanners (empty: all)
 };
 
 const std::vector<std::pair<std::string, PlannerParams>> kPlanners = {
@@ -237,8 +238,10 @@ void nativeMap(const Options &o)
         const auto pairs = randomPairs(*setup.checker, o.pairs, o.seed, 60.0, 250.0);
         std::vector<Row> rows;
         std::vector<std::pair<Pose2, Pose2>> posesForBit;
-        for (const auto &[name, params] : kPlanners)
+        for (std::size_t pi = 0; pi < kPlanners.size(); ++pi)
         {
+            if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), int(pi)) == o.only.end()) continue;
+            const auto &[name, params] = kPlanners[pi];
             PlannerConfig cfg{name, params, true, false};
             auto planner = configurePlanner(setup.ss->getSpaceInformation(), cfg);
             Row row{labelOf(name, params)};
@@ -246,8 +249,9 @@ void nativeMap(const Options &o)
             {
                 const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), t = withFittingYaw(*setup.checker, pairs[k].second);
                 const QueryResult r = runOne(setup, planner, s, t, o.limit, row);
-                std::fprintf(stderr, "  %s pair %zu: %s %.3f s %s\n", row.label.c_str(), k, r.status.asString().c_str(),
-                             r.seconds, r.drivability.drivable ? "drivable" : r.drivability.reason.c_str());
+                std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f -> %.2f,%.2f): %s %.3f s %s\n", row.label.c_str(), k, s.x, s.y, t.x,
+                             t.y, r.status.asString().c_str(), r.seconds,
+                             r.drivability.drivable ? "drivable" : r.drivability.reason.c_str());
                 if (name == "improved-astar" && params[0].second == "integral" && int(k) < o.bitstarPairs && !r.path.empty() &&
                     r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)
                     posesForBit.push_back({r.path.front(), r.path.back()});
@@ -261,7 +265,7 @@ void nativeMap(const Options &o)
         std::printf("\nBIT* on Reeds-Shepp (R_min %.2f m), %.0f s, same poses as improved-astar integral's path:\n\n",
                     v.minTurningRadius(), o.bitstarTime);
         std::printf("| pair | BIT* length (m) | BIT* driving time (s) | ours length / BIT* | ours driving time / BIT* |\n|---|---|---|---|---|\n");
-        const Row &ours = rows[1];
+        const Row &ours = *std::find_if(rows.begin(), rows.end(), [](const Row &r) { return r.label.find("integral") != std::string::npos; });
         for (std::size_t k = 0; k < posesForBit.size(); ++k)
         {
             const RsResult b = bitstarReedsShepp(*setup.checker, posesForBit[k].first, posesForBit[k].second, o.bitstarTime);
@@ -314,6 +318,7 @@ int main(int argc, char **argv)
     app.add_option("--bitstar-pairs", o.bitstarPairs, "pairs also given to BIT* on Reeds-Shepp (0: none)")->capture_default_str();
     app.add_option("--bitstar-time", o.bitstarTime, "BIT*'s time per pair, s")->capture_default_str();
     app.add_option("--campus-pairs", o.campusPairs, "pairs on the embedded campus (0: skip)")->capture_default_str();
+    app.add_option("--only", o.only, "planner indices to run: 0 improved-astar paper, 1 integral, 2 corner-astar");
     CLI11_PARSE(app, argc, argv);
     try
     {

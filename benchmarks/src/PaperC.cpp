@@ -47,8 +47,8 @@ struct Config
 const std::vector<Config> &configs()
 {
     static const std::vector<Config> c = {{"A* Euclidean", "astar-euclidean", {}},
-                                          {"corner A* (paper weights)", "corner-astar", {{"weights", "paper"}}},
-                                          {"corner A* (physics weights)", "corner-astar", {{"weights", "physics"}}}};
+                                          {"corner A* (paper weights)", "corner-astar", {{"mode", "paper"}, {"weights", "paper"}}},
+                                          {"corner A* (physics weights)", "corner-astar", {{"mode", "paper"}, {"weights", "physics"}}}};
     return c;
 }
 
@@ -210,7 +210,8 @@ nlohmann::json weightSweep(const PaperCOptions &o, const MapCase &campus, std::o
     {
         double tt = 0, tl = 0, tn = 0, baseTotal = 0;  // baseTotal: A* on the same pairs
         int ok = 0;
-        const PlannerParams weights = {{"corner_weight_45", std::to_string(2.7 * f)},
+        const PlannerParams weights = {{"mode", "paper"},
+                                       {"corner_weight_45", std::to_string(2.7 * f)},
                                        {"corner_weight_90", std::to_string(7.0 * f)},
                                        {"corner_weight_135", std::to_string(11.3 * f)}};
         for (std::size_t k = 0; k < pairs.size(); ++k)

@@ -53,9 +53,9 @@ std::vector<PlannerRow> plannerRows()
     return {{"Dijkstra", "dijkstra", {}, {120, 120, 120}},
             {"A* Manhattan", "astar-manhattan", {}, {230, 140, 20}},
             {"A* Euclidean", "astar-euclidean", {}, {220, 30, 30}},
-            {"improved A* (paper)", "improved-astar", {{"mode", "paper"}}, {20, 60, 220}},
-            {"improved A* (integral)", "improved-astar", {{"mode", "integral"}}, {20, 170, 200}},
-            {"corner A*", "corner-astar", {}, {30, 160, 40}}};
+            {"improved A* (paper)", "improved-astar", {{"mode", "paper"}, {"lattice", "grid"}}, {20, 60, 220}},
+            {"improved A* (integral)", "improved-astar", {{"mode", "integral"}, {"lattice", "grid"}}, {20, 170, 200}},
+            {"corner A*", "corner-astar", {{"mode", "paper"}}, {30, 160, 40}}};
 }
 
 const char *kTableHeader = "| area | planner | status | time s | length m | expanded | path distance m | footprint clearance m | "

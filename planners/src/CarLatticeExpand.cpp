@@ -40,7 +40,8 @@ struct CarExpander
         const double d = S.h2d_->distance(i, j);
         if (d == kInf) return kInf;
         const double graph = d < 0 ? 0.0 : d / S.ratio_ - S.seedRadius_ * m;
-        return std::max(m * e, graph);
+        static const double w = std::getenv("GRIDCAR_HWEIGHT") ? std::atof(std::getenv("GRIDCAR_HWEIGHT")) : 1.0;
+        return w * std::max(m * e, graph);
     }
     double heuristic(std::uint32_t s) const
     {
@@ -101,8 +102,11 @@ std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
     {
         const auto kp = unpack(keys_[chain[n - 1]]);
         const LatticePrimitive &p = lattice_->primitives(kp.h)[std::size_t(prim_[chain[n]])];
-        const std::vector<Pose2> w = worldSamples(kp.i, kp.j, p);
-        path.insert(path.end(), w.begin(), w.end());
+        for (Pose2 q : worldSamples(kp.i, kp.j, p))
+        {
+            q.yaw = wrapYaw(q.yaw);
+            path.push_back(q);
+        }
     }
     if (shotFrom_ == end) path.insert(path.end(), shot_.begin(), shot_.end());
     return path;

@@ -134,7 +134,7 @@ std::vector<Pose2> CarLatticeSearch::worldSamples(int i, int j, const LatticePri
     for (const Pose2 &s : p.samples)
     {
         const double x = bx + s.x, y = by + s.y;
-        out.push_back({ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, wrapYaw(phi_ + s.yaw)});
+        out.push_back({ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, phi_ + s.yaw});  // wrapped in buildPath
     }
     return out;
 }

@@ -214,7 +214,7 @@ bool FootprintChecker::rectFree(double cx, double cy, double cs, double sn, doub
 {
     const Cell c = grid_->worldToCell(cx, cy);
     if (grid_->isBlocked(c.col, c.row)) return false;  // the centre lies in a blocked cell
-    if (field_->cellDistance(c.col, c.row) - 2.0 * halfDiag_ > std::hypot(a, b)) return true;
+    if (field_->cellDistance(c.col, c.row) - 2.0 * halfDiag_ > std::sqrt(a * a + b * b)) return true;
     const double res = grid_->resolution();
     if (a > res || b > res)
     {
@@ -241,6 +241,30 @@ bool FootprintChecker::rectFree(double cx, double cy, double cs, double sn, doub
     return true;
 }
 
+const FootprintChecker::Body &FootprintChecker::bodyFor(double margin) const
+{
+    // the car lattice asks for two margins over and over: the last two bodies per thread, keyed
+    // by everything a body depends on (not by checker address, which a new checker may reuse)
+    struct Slot
+    {
+        double length{-1}, width{-1}, rear{-1}, margin{-1};
+        Body body{};
+    };
+    thread_local Slot slots[2];
+    thread_local int next = 0;
+    const VehicleParams &v = vehicle_;
+    for (Slot &s : slots)
+        if (s.margin == margin && s.length == v.length && s.width == v.width && s.rear == v.rearOverhang) return s.body;
+    Slot &s = slots[next];
+    next = 1 - next;
+    s.length = v.length;
+    s.width = v.width;
+    s.rear = v.rearOverhang;
+    s.margin = margin;
+    s.body = makeBody(vehicle_, margin);
+    return s.body;
+}
+
 int FootprintChecker::quickVerdict(const Pose2 &p) const
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw)) return 0;
@@ -253,7 +277,7 @@ bool FootprintChecker::provenFree(const Pose2 &p, double margin) const
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw) || !std::isfinite(margin)) return false;
     if (vehicle_.isPoint()) return !cellBlockedAt(p.x, p.y) && !(margin > 0);
-    const Body b = margin > 0 ? makeBody(vehicle_, margin) : body_;
+    const Body &b = margin > 0 ? bodyFor(margin) : body_;
     return quickBody(b, p.x, p.y, p.yaw, std::cos(p.yaw), std::sin(p.yaw)) >= 1;
 }
 
@@ -276,7 +300,7 @@ bool FootprintChecker::isValidInflated(const Pose2 &p, double margin) const
 {
     if (!(margin > 0.0) || vehicle_.isPoint()) return isValid(p);
     if (!std::isfinite(margin)) return false;
-    return validBody(makeBody(vehicle_, margin), p.x, p.y, p.yaw);
+    return validBody(bodyFor(margin), p.x, p.y, p.yaw);
 }
 
 bool FootprintChecker::fitsAtSomeHeading(double x, double y, int headings, double *yaw) const

@@ -56,16 +56,6 @@ void OccupancyGrid::setOrigin(double x, double y, double yaw)
     originYaw_ = yaw;
 }
 
-Cell OccupancyGrid::worldToCell(double x, double y) const
-{
-    const double u = std::floor(worldToMapU(x));
-    const double v = std::floor(worldToMapV(y));
-    // clamp into int range before the cast; out-of-range values stay out of bounds
-    const double lim = 4.0e9;
-    const int col = int(std::max(-lim / 2, std::min(lim / 2, std::isfinite(u) ? u : -1.0)));
-    const int vi = int(std::max(-lim / 2, std::min(lim / 2, std::isfinite(v) ? v : -1.0)));
-    return Cell{col, height_ - 1 - vi};
-}
 
 OccupancyGrid::Counts OccupancyGrid::counts() const
 {

@@ -143,6 +143,7 @@ private:
         int discs;
     };
     static Body makeBody(const VehicleParams &v, double margin);
+    const Body &bodyFor(double margin) const;
     bool validBody(const Body &b, double x, double y, double yaw) const;
     /// 1 proven free, 0 proven blocked, -1 undecided by the distance field.
     int quickBody(const Body &b, double x, double y, double yaw, double cs, double sn) const;

@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace gridcar
@@ -81,7 +83,16 @@ public:
     /// World y of the centre of row @p row (row 0 is the top).
     double cellCenterY(int row) const { return originY_ + (height_ - row - 0.5) * resolution_; }
     /// The cell that contains world point (x, y) (may be out of bounds; check inBounds()).
-    Cell worldToCell(double x, double y) const;
+    Cell worldToCell(double x, double y) const
+    {
+        const double u = std::floor(worldToMapU(x));
+        const double v = std::floor(worldToMapV(y));
+        // clamp into int range before the cast; out-of-range values stay out of bounds
+        const double lim = 2.0e9;
+        const int col = int(std::max(-lim, std::min(lim, std::isfinite(u) ? u : -1.0)));
+        const int vi = int(std::max(-lim, std::min(lim, std::isfinite(v) ? v : -1.0)));
+        return Cell{col, height_ - 1 - vi};
+    }
     /// Continuous "map frame" coordinates: u = (x - ox) / res, v = (y - oy) / res (cells, y up).
     double worldToMapU(double x) const { return (x - originX_) / resolution_; }
     double worldToMapV(double y) const { return (y - originY_) / resolution_; }
