@@ -63,13 +63,17 @@ struct Query
     VehicleParams vehicle;
     GridSetup setup;
     Pose2 start, goal;
-    bool startYaw{false};
+    bool startYaw{false};  ///< the start's yaw was given (else: free start heading)
+    bool goalYaw{false};   ///< the goal's yaw was given
 };
 /// Loads the map and the vehicle, reads start and goal (with @p withPoses; InputError on
-/// malformed ones) and builds the setup.
+/// malformed ones) and builds the setup. A start or goal without a yaw gets the first yaw (5
+/// degrees apart from 0) at which the vehicle fits there, so that the OMPL state is valid; the
+/// grid planners then choose the heading themselves.
 Query loadQuery(const QueryArgs &q, bool withPoses);
-/// "" if the vehicle fits at @p p, else why not ("outside the map", "in collision for vehicle X").
-std::string whyInvalid(const Query &query, const Pose2 &p);
+/// "" if the vehicle fits at @p p (at any heading with @p anyHeading), else why not ("outside
+/// the map", "in collision for vehicle X", "... at every heading").
+std::string whyInvalid(const Query &query, const Pose2 &p, bool anyHeading = false);
 /// The planner of the query: configurePlanner() with the free start heading when no start yaw
 /// was given, the --param settings and --smooth.
 ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query);

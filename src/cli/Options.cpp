@@ -38,9 +38,9 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
     if (plannerRequired) planner->required();
     cmd->add_option("--start", q.start,
                     "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: free start heading for the grid "
-                    "planners (OMPL planners start at yaw 0)");
+                    "planners (OMPL planners start at the first yaw, in 5-degree steps from 0, at which the vehicle fits)");
     cmd->add_option("--start-cell", q.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row)");
-    cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW_DEG] (the goal heading counts only with --param match_goal_heading=1)");
+    cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW_DEG] (the goal heading counts only with --param match_goal_heading=1; without a yaw the vehicle must fit there at some heading)");
     cmd->add_option("--goal-cell", q.goalCell, "Goal COL,ROW[,HEADING_DEG]");
     addVehicleOption(cmd, q.vehicle);
     cmd->add_option("--param", q.params, "NAME=VALUE: set a declared planner parameter (repeatable)");
@@ -60,19 +60,26 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
     query.vehicle = VehicleParams::fromNameOrFile(q.vehicle);
     if (withPoses)  // before the set-up: a malformed pose fails at once
     {
-        bool goalYaw = false;
         query.start = parsePose(q.start, q.startCell, "start", *query.grid, query.startYaw);
-        query.goal = parsePose(q.goal, q.goalCell, "goal", *query.grid, goalYaw);
+        query.goal = parsePose(q.goal, q.goalCell, "goal", *query.grid, query.goalYaw);
     }
     query.setup = makeGridSetup(query.grid, query.vehicle);
+    if (withPoses)
+    {
+        double yaw = 0;
+        if (!query.startYaw && query.setup.checker->fitsAtSomeHeading(query.start.x, query.start.y, 72, &yaw)) query.start.yaw = yaw;
+        if (!query.goalYaw && query.setup.checker->fitsAtSomeHeading(query.goal.x, query.goal.y, 72, &yaw)) query.goal.yaw = yaw;
+    }
     return query;
 }
 
-std::string whyInvalid(const Query &query, const Pose2 &p)
+std::string whyInvalid(const Query &query, const Pose2 &p, bool anyHeading)
 {
-    if (query.setup.checker->isValid(p)) return "";
+    const FootprintChecker &fc = *query.setup.checker;
+    if (anyHeading ? fc.fitsAtSomeHeading(p.x, p.y, 72) : fc.isValid(p)) return "";
     const Cell c = query.grid->worldToCell(p.x, p.y);
-    return query.grid->inBounds(c.col, c.row) ? "in collision for vehicle " + query.vehicle.name : std::string("outside the map");
+    if (!query.grid->inBounds(c.col, c.row)) return "outside the map";
+    return "in collision for vehicle " + query.vehicle.name + (anyHeading ? " at every heading (5-degree steps)" : "");
 }
 
 ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query)

@@ -100,7 +100,7 @@ int runPlan(const PlanOptions &o)
     // the same checks for every planner (OMPL's own planners do not all check the goal)
     for (const auto &[what, pose] : {std::make_pair(std::string("start"), query.start), std::make_pair(std::string("goal"), query.goal)})
     {
-        const std::string why = whyInvalid(query, pose);
+        const std::string why = whyInvalid(query, pose, what == "start" ? !query.startYaw : !query.goalYaw);
         if (why.empty()) continue;
         const std::string msg = what + " " + describe(pose) + " is " + why;
         if (o.json)

@@ -1,0 +1,195 @@
+// CarLatticeSearch and the planners on it: the obstacle-aware heuristic against exhaustive
+// search, drivable paths of every car-lattice planner, free start and goal heading, PositionGoal.
+#include "PlannerTestUtil.h"
+
+#include "gridcar/core/Angles.h"
+#include "gridcar/map/CampusGenerator.h"
+#include "gridcar/path/Drivability.h"
+#include "gridcar/planners/ImprovedAStar.h"
+#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/planners/search/CarLatticeSearch.h"
+#include "gridcar/spaces/Goals.h"
+#include "gridcar/spaces/OmplAdapters.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+using namespace gridcar;
+namespace ob = ompl::base;
+
+namespace
+{
+std::shared_ptr<OccupancyGrid> randomBlocks(unsigned seed)
+{
+    auto g = std::make_shared<OccupancyGrid>(90, 70, 0.1, CellState::Free);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> uc(0, 89), ur(0, 69), sz(1, 9);
+    for (int k = 0; k < 30; ++k)
+    {
+        const int c = uc(rng), r = ur(rng), w = sz(rng), h = sz(rng);
+        for (int rr = r; rr < std::min(70, r + h); ++rr)
+            for (int cc = c; cc < std::min(90, c + w); ++cc) g->set(cc, rr, CellState::Occupied);
+    }
+    return g;
+}
+
+Pose2 randomFree(const FootprintChecker &fc, std::mt19937 &rng)
+{
+    const OccupancyGrid &g = fc.grid();
+    std::uniform_int_distribution<int> uc(0, g.width() - 1), ur(0, g.height() - 1);
+    for (;;)
+    {
+        const int c = uc(rng), r = ur(rng);
+        double yaw = 0;
+        if (fc.fitsAtSomeHeading(g.cellCenterX(c), g.cellCenterY(r), 16, &yaw)) return {g.cellCenterX(c), g.cellCenterY(r), yaw};
+    }
+}
+}  // namespace
+
+// The heuristic's claim: h(start) - seed radius <= the cheapest lattice path into the goal
+// region (nodes within the seed radius of the goal), found here by exhaustive search (Dijkstra
+// order: the same search with no heuristic). A* with the heuristic must then find that cost too.
+TEST(CarLatticeSearch, HeuristicIsALowerBoundAgainstExhaustiveSearchOnRandomMaps)
+{
+    double worstRatio = 0, worstAstar = 0;
+    int compared = 0;
+    for (unsigned seed = 1; seed <= 6; ++seed)
+    {
+        auto g = randomBlocks(seed);
+        auto field = std::make_shared<DistanceField>(*g);
+        FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
+        for (int headings : {8, 16})
+        {
+            auto lattice = std::make_shared<const CarLattice>(
+                CarLatticeConfig{0.1, headings, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()});
+            CarLatticeSearch search(fc, lattice);
+            std::mt19937 rng(seed * 31 + unsigned(headings));
+            for (int k = 0; k < 4; ++k)
+            {
+                CarLatticeQuery q;
+                q.start = randomFree(fc, rng);
+                q.goal = randomFree(fc, rng);
+                q.shoot = false;
+                const double radius = 1.5 * lattice->cell();
+                q.inGoal = [&](const Pose2 &p) { return std::hypot(p.x - q.goal.x, p.y - q.goal.y) <= radius; };
+                LengthCost cost;
+                const CarLatticeResult a = search.run(q, cost, [] { return false; });
+                const double h = search.heuristicAt(0, 0);
+                CarLatticeQuery blind = q;
+                blind.aim = false;
+                const CarLatticeResult d = search.run(blind, cost, [] { return false; });
+                ASSERT_EQ(a.exact, d.exact) << "seed " << seed;
+                if (!d.exact) continue;
+                ++compared;
+                EXPECT_LE(h - radius, d.cost * (1 + 1e-9)) << "seed " << seed << " headings " << headings;
+                worstRatio = std::max(worstRatio, (h - radius) / d.cost);
+                worstAstar = std::max(worstAstar, a.cost / d.cost);
+                // closed states stay closed (Hybrid A*), and the Euclidean part overestimates by up
+                // to the goal radius inside the region: near-optimal, not optimal
+                EXPECT_LE(a.cost, d.cost * 1.06);
+                EXPECT_LE(a.expanded, d.expanded);
+            }
+        }
+    }
+    EXPECT_GT(compared, 20);
+    std::printf("heuristic: worst (h - seed radius) / exhaustive optimum %.3f, worst A* / optimum %.6f over %d queries\n",
+                worstRatio, worstAstar, compared);
+}
+
+TEST(CarLatticeSearch, EveryCarLatticePlannerReturnsDrivablePathsOnTheCampus)
+{
+    auto grid = std::make_shared<const OccupancyGrid>(generateCampus());
+    GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-i"));
+    std::mt19937 rng(7);
+    const std::vector<std::pair<std::string, PlannerParams>> planners = {
+        {"improved-astar", {{"mode", "paper"}}}, {"improved-astar", {{"mode", "integral"}}}, {"corner-astar", {}}};
+    for (const auto &[name, params] : planners)
+    {
+        auto p = configurePlanner(s.ss->getSpaceInformation(), {name, params, true, false});
+        int exact = 0;
+        for (int k = 0; k < 5; ++k)
+        {
+            const Pose2 a = randomFree(*s.checker, rng), b = randomFree(*s.checker, rng);
+            const QueryResult r = runQuery(s, p, a, b, 20.0);
+            if (r.status != ob::PlannerStatus::EXACT_SOLUTION) continue;
+            ++exact;
+            // independent: exact FCL at 2 cm, curvature <= K_max
+            EXPECT_TRUE(r.drivability.drivable) << name << ": " << r.drivability.reason;
+            EXPECT_NEAR(r.path.back().x, b.x, 1e-9);
+            EXPECT_NEAR(r.path.back().y, b.y, 1e-9);
+            EXPECT_NEAR(r.path.front().x, a.x, 1e-9);
+        }
+        EXPECT_GE(exact, 4) << name;
+    }
+}
+
+/// A 40 m x 20 m map whose only free space is a north-south corridor 3 m wide and an east-west
+/// street 8 m wide at its top: the 4.5 m car fits in the corridor only heading north or south.
+std::shared_ptr<OccupancyGrid> corridorMap()
+{
+    auto g = std::make_shared<OccupancyGrid>(400, 200, 0.1, CellState::Occupied);
+    for (int r = 20; r < 190; ++r)
+        for (int c = 185; c < 215; ++c) g->set(c, r, CellState::Free);  // corridor x in [18.5, 21.5]
+    for (int r = 10; r < 90; ++r)
+        for (int c = 20; c < 380; ++c) g->set(c, r, CellState::Free);  // street, y in [11, 19]
+    return g;
+}
+
+TEST(CarLatticeSearch, FreeStartAndGoalHeadingInANorthSouthCorridor)
+{
+    GridSetup s = makeGridSetup(corridorMap(), VehicleParams::preset("paper-c-car"));
+    const Pose2 start{20.0, 3.0, 0.0}, goal{10.0, 15.0, 0.0};
+    ASSERT_FALSE(s.checker->isValid(start));  // sideways: no
+    double yaw = 0;
+    ASSERT_TRUE(s.checker->fitsAtSomeHeading(start.x, start.y, 72, &yaw));
+    const std::vector<std::pair<std::string, PlannerParams>> planners = {
+        {"improved-astar", {{"mode", "paper"}}}, {"improved-astar", {{"mode", "integral"}}}, {"corner-astar", {}}};
+    for (const auto &[name, params] : planners)
+    {
+        auto p = configurePlanner(s.ss->getSpaceInformation(), {name, params, true, false});
+        const QueryResult r = runQuery(s, p, {start.x, start.y, yaw}, goal, 20.0);
+        EXPECT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION)
+            << name << " " << params[0].second << " ends at " << r.path.back().x << "," << r.path.back().y;
+        if (r.status != ob::PlannerStatus::EXACT_SOLUTION) continue;
+        EXPECT_TRUE(r.drivability.drivable) << name << ": " << r.drivability.reason;
+        EXPECT_NEAR(std::abs(wrapAngle(r.path.front().yaw)), M_PI / 2, 1e-9) << name;  // drives north
+    }
+}
+
+TEST(CarLatticeSearch, PositionGoalWithAndWithoutHeadingTolerance)
+{
+    GridSetup s = makeGridSetup(corridorMap(), VehicleParams::preset("paper-c-car"));
+    auto si = s.ss->getSpaceInformation();
+    auto p = std::make_shared<ImprovedAStar>(si);
+    p->setFreeStartHeading(true);
+    s.ss->setPlanner(p);
+    ob::ScopedState<ob::SE2StateSpace> st(s.space);
+    st->setXY(20.0, 3.0);
+    st->setYaw(M_PI / 2);
+    s.ss->setStartState(st);
+    // any heading, exact position
+    s.ss->setGoal(std::make_shared<PositionGoal>(si, 30.0, 15.0, 0.0));
+    ASSERT_EQ(s.ss->solve(20.0), ob::PlannerStatus::EXACT_SOLUTION);
+    Pose2 end = toPose(s.ss->getSolutionPath().getState(s.ss->getSolutionPath().getStateCount() - 1));
+    EXPECT_NEAR(end.x, 30.0, 1e-9);
+    EXPECT_NEAR(end.y, 15.0, 1e-9);
+    // heading west within 10 degrees: the car must turn round in the street
+    s.ss->clear();
+    s.ss->setGoal(std::make_shared<PositionGoal>(si, 10.0, 15.0, 0.3, M_PI, 10 * M_PI / 180));
+    ASSERT_EQ(s.ss->solve(20.0), ob::PlannerStatus::EXACT_SOLUTION);
+    const auto &path = s.ss->getSolutionPath();
+    end = toPose(path.getState(path.getStateCount() - 1));
+    EXPECT_LE(std::hypot(end.x - 10.0, end.y - 15.0), 0.3);
+    EXPECT_LE(std::abs(wrapAngle(end.yaw - M_PI)), 10 * M_PI / 180 + 1e-9);
+    EXPECT_TRUE(checkDrivable(toPoses(path), *s.checker).drivable);
+    // an OMPL sampling planner can aim at it too
+    PositionGoal free(si, 30.0, 15.0, 0.5);
+    ob::ScopedState<ob::SE2StateSpace> sample(s.space);
+    free.sampleGoal(sample.get());
+    EXPECT_TRUE(si->isValid(sample.get()));
+    EXPECT_TRUE(free.isSatisfied(sample.get()));
+    EXPECT_THROW(PositionGoal(si, 0, 0, -1), std::invalid_argument);
+}
