@@ -183,6 +183,7 @@ struct Options
     double bitstarTime{10.0};
     int campusPairs{20};
     std::vector<int> only;  ///< indices into kPlanners (empty: all)
+    std::vector<std::string> params;  ///< NAME=VALUE for every car-lattice planner
 };
 
 const std::vector<std::pair<std::string, PlannerParams>> kPlanners = {
@@ -242,7 +243,9 @@ void nativeMap(const Options &o)
         {
             if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), int(pi)) == o.only.end()) continue;
             const auto &[name, params] = kPlanners[pi];
-            PlannerConfig cfg{name, params, true, false};
+            PlannerParams all = params;
+            for (const auto &kv : parsePlannerParams(o.params)) all.push_back(kv);
+            PlannerConfig cfg{name, all, true, false};
             auto planner = configurePlanner(setup.ss->getSpaceInformation(), cfg);
             Row row{labelOf(name, params)};
             for (std::size_t k = 0; k < pairs.size(); ++k)
@@ -318,6 +321,7 @@ int main(int argc, char **argv)
     app.add_option("--bitstar-pairs", o.bitstarPairs, "pairs also given to BIT* on Reeds-Shepp (0: none)")->capture_default_str();
     app.add_option("--bitstar-time", o.bitstarTime, "BIT*'s time per pair, s")->capture_default_str();
     app.add_option("--campus-pairs", o.campusPairs, "pairs on the embedded campus (0: skip)")->capture_default_str();
+    app.add_option("--param", o.params, "NAME=VALUE set on every planner of the native-map runs (repeatable)");
     app.add_option("--only", o.only, "planner indices to run: 0 improved-astar paper, 1 integral, 2 corner-astar");
     CLI11_PARSE(app, argc, argv);
     try

@@ -36,12 +36,11 @@ struct CarExpander
         const Pose2 p = S.nodePose(i, j, 0);
         const double e = std::hypot(S.query_.goal.x - p.x, S.query_.goal.y - p.y);
         const double m = cost.minCostPerMetre();
-        if (!S.use2d_) return m * e;
+        if (!S.use2d_) return S.query_.weight * m * e;
         const double d = S.h2d_->distance(i, j);
         if (d == kInf) return kInf;
         const double graph = d < 0 ? 0.0 : d / S.ratio_ - S.seedRadius_ * m;
-        static const double w = std::getenv("GRIDCAR_HWEIGHT") ? std::atof(std::getenv("GRIDCAR_HWEIGHT")) : 1.0;
-        return w * std::max(m * e, graph);
+        return S.query_.weight * std::max(m * e, graph);
     }
     double heuristic(std::uint32_t s) const
     {
@@ -123,6 +122,18 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     for (int h = 0; h < lattice_->headings(); ++h) steps.push_back({lattice_->vi(h), lattice_->vj(h)});
     h2d_ = std::make_unique<ObstacleHeuristic>(i0_, j0_, ni_, nj_, steps, c, [this](int i, int j) { return fitsAtNode(i, j); });
     h2d_->setCancel(cancelled);
+    {
+        // a step along heading k is lined up with axis k mod (H / 2): the car fits there at
+        // that heading or its reverse
+        const int H = lattice_->headings();
+        std::vector<int> axis;
+        for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
+        h2d_->setAxisTest(axis, [this, H](int i, int j, int a) {
+            const Pose2 p = nodePose(i, j, a);
+            return checker_.isValid(p) || checker_.isValid({p.x, p.y, wrapYaw(p.yaw + M_PI)});
+        });
+        (void)H;
+    }
     if (cost.weighted()) h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });
     // seeds: the nodes round the goal, at their straight-line distance
     const double gx = cphi_ * (q.goal.x - ox_) + sphi_ * (q.goal.y - oy_), gy = -sphi_ * (q.goal.x - ox_) + cphi_ * (q.goal.y - oy_);

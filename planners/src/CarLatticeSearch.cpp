@@ -211,7 +211,15 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
     const double e = std::hypot(g.x - from.x, g.y - from.y);
     const double R = lattice_->config().turnRadius, c = lattice_->cell();
     if (e > 30 * R + 10 * c) return false;
-    if (e > 2 * R + 2 * c && expansions % 8 != 0) return false;
+    const bool near = e <= 2 * R + 2 * c;
+    if (!near)
+    {
+        if (expansions % 8 != 0) return false;
+        // where the obstacle-aware distance is well above the straight line, something is in
+        // the way: a Dubins curve (nearly straight this far out) would hit it
+        const double d = use2d_ ? h2d_->distance(k.i, k.j) : -1.0;
+        if (d > 1.1 * e + R) return false;
+    }
     std::vector<double> yaws;
     if (query_.goalYawTolerance < 0)
     {
@@ -234,7 +242,7 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         if (len <= e + 2 * M_PI * R) cand.push_back({len, y});
     }
     std::sort(cand.begin(), cand.end());
-    if (cand.size() > 3) cand.resize(3);
+    if (cand.size() > (near ? 3u : 1u)) cand.resize(near ? 3u : 1u);
     for (const auto &[len, y] : cand)
     {
         ++shotsTried_;

@@ -21,6 +21,15 @@ void GridPlanner::declareCarLatticeParams()
 {
     declareParam<double>("lattice_cell", this, &GridPlanner::setLatticeCell, &GridPlanner::latticeCell, "0.:0.05:5.");
     declareParam<int>("headings", this, &GridPlanner::setLatticeHeadings, &GridPlanner::latticeHeadings, "8,16");
+    declareParam<double>("heuristic_weight", this, &GridPlanner::setHeuristicWeight, &GridPlanner::heuristicWeight,
+                         "1.:0.05:3.");
+}
+
+void GridPlanner::setHeuristicWeight(double w)
+{
+    if (!std::isfinite(w) || w < 1.0 || w > 100.0)
+        throw std::invalid_argument(getName() + ": heuristic_weight must be a number in [1, 100]");
+    heuristicWeight_ = w;
 }
 
 void GridPlanner::setLatticeCell(double m)
@@ -132,6 +141,7 @@ ompl::base::PlannerStatus GridPlanner::solveCarLattice(const ompl::base::Planner
     CarLatticeQuery q;
     q.start = toPose(start);
     q.freeStartHeading = freeStartHeading_;
+    q.weight = heuristicWeight_;
     PlannerStatus bad;
     if (!carGoal(q, bad)) return bad;
     const std::unique_ptr<LatticeCostModel> cost = carCost();

@@ -65,6 +65,26 @@ void ObstacleHeuristic::reset(const std::vector<std::pair<std::array<int, 2>, do
     }
 }
 
+void ObstacleHeuristic::setAxisTest(std::vector<int> stepAxis, std::function<bool(int, int, int)> fitsAxis)
+{
+    stepAxis_ = std::move(stepAxis);
+    stepAxis_.resize(steps_.size(), -1);  // reverse steps added by the constructor: no test
+    fitsAxis_ = std::move(fitsAxis);
+    axisAsked_.assign(g_.size(), 0);
+    axisOk_.assign(g_.size(), 0);
+}
+
+bool ObstacleHeuristic::axisFits(std::size_t n, int i, int j, int axis)
+{
+    const auto bit = std::uint16_t(1u << axis);
+    if (!(axisAsked_[n] & bit))
+    {
+        axisAsked_[n] |= bit;
+        if (fitsAxis_(i, j, axis)) axisOk_[n] |= bit;
+    }
+    return (axisOk_[n] & bit) != 0;
+}
+
 double ObstacleHeuristic::weightAt(std::size_t n, int i, int j)
 {
     if (w_.empty()) w_.assign(g_.size(), -1.0f);
@@ -95,6 +115,8 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
             const std::size_t m = idx(a, b);
             if (state_[m] & kClosed) continue;
             if (!traversable(a, b)) continue;
+            if (fitsAxis_ && stepAxis_[k] >= 0 && !(axisFits(e.n, i, j, stepAxis_[k]) && axisFits(m, a, b, stepAxis_[k])))
+                continue;
             double len = stepLen_[k];
             if (weight_) len *= std::min(weightAt(e.n, i, j), weightAt(m, a, b));
             const double ng = e.g + len;

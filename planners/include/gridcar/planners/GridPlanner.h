@@ -88,6 +88,9 @@ public:
     /// Heading count of the car lattice: 8 or 16 (`headings`).
     int latticeHeadings() const { return latticeHeadings_; }
     void setLatticeHeadings(int h);
+    /// Heuristic weight on the car lattice (`heuristic_weight`, >= 1; see CarLatticeQuery).
+    double heuristicWeight() const { return heuristicWeight_; }
+    void setHeuristicWeight(double w);
     /// True if the planner, as configured, searches the car lattice.
     virtual bool usesCarLattice() const { return false; }
     /// The car lattice in use after setup() (null on the grid lattice).
@@ -166,6 +169,7 @@ private:
     void getCarPlannerData(ompl::base::PlannerData &data) const;
     double latticeCell_{0.0};
     int latticeHeadings_{16};
+    double heuristicWeight_{1.1};
     std::unique_ptr<CarLatticeSearch> car_;
     mutable std::vector<ompl::base::State *> carDataStates_;
     bool checkMoveUncached(int col, int row, int d) const;

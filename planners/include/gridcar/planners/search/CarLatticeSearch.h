@@ -60,6 +60,9 @@ struct CarLatticeQuery
     /// False when `goal` is no target at all (a goal region that cannot be sampled): no
     /// heuristic then (Dijkstra order), and no shot.
     bool aim{true};
+    /// Heuristic weight w >= 1 (weighted A*): the path found costs at most w x the lattice
+    /// optimum when the heuristic is a lower bound; larger w, fewer expansions.
+    double weight{1.0};
 };
 
 /// What a search on the car lattice found.

@@ -22,6 +22,12 @@ namespace gridcar
  * not closed yet resumes it until that node is closed or the graph is exhausted. A closed
  * node's distance is exact for this graph.
  *
+ * With setAxisTest() an edge also needs the car to fit at both nodes lined up with it (at the
+ * step's heading or its reverse): a long car then cannot slip sideways through a gap it could
+ * only pass lengthwise. This is a relaxation of a lattice path made of straight primitives; a
+ * turn primitive's nodes are lined up with its two headings, not with the 2D steps that join
+ * them, so in tight turns the bound may be exceeded (the tests measure by how much).
+ *
  * Why it bounds a car lattice path from below: every node of a lattice path is traversable
  * (the car stands there at a lattice heading), and a primitive from node a to node b is at
  * least |b - a| long. The graph distance between a and b may exceed |b - a|, by at most the
@@ -45,6 +51,10 @@ public:
     /// Edge weights: an edge costs its length x min(weight(a), weight(b)) (default 1). Weights
     /// must be >= 1: the search's own Euclidean guide assumes it.
     void setWeight(std::function<double(int, int)> weight) { weight_ = std::move(weight); }
+    /// Oriented edges: a step also needs fitsAxis(i, j, axis) true at both its nodes, axis =
+    /// stepAxis[k] for step k (the car fits there lined up with the step). Asked at most once
+    /// per node and axis (at most 16 axes).
+    void setAxisTest(std::vector<int> stepAxis, std::function<bool(int, int, int)> fitsAxis);
     /// Polled every 1024 closed nodes while distance() resumes the search.
     void setCancel(std::function<bool()> cancelled) { cancelled_ = std::move(cancelled); }
     bool inBox(int i, int j) const { return i >= i0_ && j >= j0_ && i < i0_ + ni_ && j < j0_ + nj_; }
@@ -67,6 +77,10 @@ private:
     std::function<bool()> cancelled_;
     std::function<double(int, int)> weight_;
     std::vector<float> w_;  ///< cached node weights (< 0: not computed)
+    std::vector<int> stepAxis_;
+    std::function<bool(int, int, int)> fitsAxis_;
+    std::vector<std::uint16_t> axisAsked_, axisOk_;
+    bool axisFits(std::size_t n, int i, int j, int axis);
     bool stopped_{false};
     std::vector<double> g_;
     std::vector<std::uint8_t> state_;  ///< bit 0 closed, bit 1 asked, bit 2 traversable
