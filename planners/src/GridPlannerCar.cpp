@@ -62,7 +62,7 @@ CarLatticeConfig GridPlanner::carLatticeConfig() const
     else
     {
         const double want = std::min(v.isPoint() ? 4 * res : v.width, rmin > 0 ? rmin : 4 * res) / 4;
-        cfg.cell = res * std::max(1.0, std::floor(want / res + 1e-9));
+        cfg.cell = res * std::max(1.0, std::round(want / res));
     }
     cfg.headings = carHeadings();
     // arcs 1 % wider than R_min: sampled curves then stay within K_max by a clear margin

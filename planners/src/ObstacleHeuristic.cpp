@@ -114,8 +114,12 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
             if (!inBox(a, b)) continue;
             const std::size_t m = idx(a, b);
             if (state_[m] & kClosed) continue;
-            if (!traversable(a, b)) continue;
-            if (fitsAxis_ && stepAxis_[k] >= 0 && !(axisFits(e.n, i, j, stepAxis_[k]) && axisFits(m, a, b, stepAxis_[k])))
+            if (fitsAxis_ && stepAxis_[k] >= 0)
+            {
+                // the oriented test implies the node test
+                if (!(axisFits(e.n, i, j, stepAxis_[k]) && axisFits(m, a, b, stepAxis_[k]))) continue;
+            }
+            else if (!traversable(a, b))
                 continue;
             double len = stepLen_[k];
             if (weight_) len *= std::min(weightAt(e.n, i, j), weightAt(m, a, b));

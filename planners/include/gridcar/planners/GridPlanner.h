@@ -82,7 +82,7 @@ public:
 
     // The car lattice (search/CarLattice.h), for the planners that search it.
     /// Lattice cell size in metres; 0 = automatic (lattice_cell): the largest multiple of the
-    /// map resolution not above min(width, R_min) / 4, at least one map cell.
+    /// map resolution nearest to min(width, R_min) / 4, at least one map cell.
     double latticeCell() const { return latticeCell_; }
     void setLatticeCell(double m);
     /// Heading count of the car lattice: 8 or 16 (`headings`).
