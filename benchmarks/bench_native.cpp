@@ -8,6 +8,7 @@
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/planners/PlanQuery.h"
+#include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"
 
 #include <CLI/CLI.hpp>
@@ -107,7 +108,7 @@ std::vector<std::pair<Pose2, Pose2>> randomPairs(const FootprintChecker &fc, int
 struct Row
 {
     std::string label;
-    int runs{0}, solved{0}, drivable{0};
+    int runs{0}, solved{0}, drivable{0}, reached{0};
     std::vector<double> times, lengths, drive;
 };
 
@@ -157,16 +158,17 @@ RsResult bitstarReedsShepp(const FootprintChecker &fc, const Pose2 &s, const Pos
 
 void printRows(const std::vector<Row> &rows)
 {
-    std::printf("| planner | solved | drivable | solve() median / p90 / max (ms) | mean length (m) | mean driving time (s) |\n");
-    std::printf("|---|---|---|---|---|---|\n");
+    std::printf("| planner | solved | drivable | driven to the goal | solve() median / p90 / max (ms) | mean length (m) | mean "
+                "driving time (s) |\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
     for (const Row &r : rows)
     {
         double len = 0, dr = 0;
         for (double v : r.lengths) len += v;
         for (double v : r.drive) dr += v;
         const double k = r.lengths.empty() ? NAN : 1.0 / double(r.lengths.size());
-        std::printf("| %s | %d/%d | %d/%d | %.1f / %.1f / %.1f | %.1f | %.1f |\n", r.label.c_str(), r.solved, r.runs,
-                    r.drivable, r.runs, 1e3 * quantile(r.times, 0.5), 1e3 * quantile(r.times, 0.9),
+        std::printf("| %s | %d/%d | %d/%d | %d/%d | %.1f / %.1f / %.1f | %.1f | %.1f |\n", r.label.c_str(), r.solved, r.runs,
+                    r.drivable, r.runs, r.reached, r.runs, 1e3 * quantile(r.times, 0.5), 1e3 * quantile(r.times, 0.9),
                     1e3 * quantile(r.times, 1.0), len * k, dr * k);
     }
     std::fflush(stdout);
@@ -212,6 +214,8 @@ QueryResult runOne(GridSetup &setup, const ompl::base::PlannerPtr &planner, cons
         row.lengths.push_back(r.metrics.length);
         row.drive.push_back(drivingTime(r.path, setup.checker->vehicle()));
         if (r.drivability.drivable) ++row.drivable;
+        // the path driven by paper C's follower in the kinematic simulation
+        if (drivePath(r.path, *setup.checker, Scenario()).outcome == DriveResult::Outcome::Reached) ++row.reached;
     }
     return r;
 }
@@ -239,6 +243,7 @@ void nativeMap(const Options &o)
         const auto pairs = randomPairs(*setup.checker, o.pairs, o.seed, 60.0, 250.0);
         std::vector<Row> rows;
         std::vector<std::pair<Pose2, Pose2>> posesForBit;
+        std::vector<std::size_t> bitPairs;  // pair index of each posesForBit entry
         for (std::size_t pi = 0; pi < kPlanners.size(); ++pi)
         {
             if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), int(pi)) == o.only.end()) continue;
@@ -257,7 +262,10 @@ void nativeMap(const Options &o)
                              r.drivability.drivable ? "drivable" : r.drivability.reason.c_str());
                 if (name == "improved-astar" && params[0].second == "integral" && int(k) < o.bitstarPairs && !r.path.empty() &&
                     r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)
+                {
                     posesForBit.push_back({r.path.front(), r.path.back()});
+                    bitPairs.push_back(k);
+                }
             }
             rows.push_back(row);
         }
@@ -265,22 +273,37 @@ void nativeMap(const Options &o)
                     vname.c_str(), pairs.size(), o.limit, setupSec, rss0, peakRssMb());
         printRows(rows);
         if (posesForBit.empty()) continue;
-        std::printf("\nBIT* on Reeds-Shepp (R_min %.2f m), %.0f s, same poses as improved-astar integral's path:\n\n",
+        std::printf("\nBIT* on Reeds-Shepp (R_min %.2f m), %.0f s, from the start pose and to the end pose of improved-astar "
+                    "integral's path; ours / BIT* (below 1: ours better):\n\n",
                     v.minTurningRadius(), o.bitstarTime);
-        std::printf("| pair | BIT* length (m) | BIT* driving time (s) | ours length / BIT* | ours driving time / BIT* |\n|---|---|---|---|---|\n");
-        const Row &ours = *std::find_if(rows.begin(), rows.end(), [](const Row &r) { return r.label.find("integral") != std::string::npos; });
+        std::printf("| pair | BIT* length (m) | BIT* driving time (s) | integral length | integral driving time | corner-astar "
+                    "length | corner-astar driving time |\n|---|---|---|---|---|---|---|\n");
+        // per planner row: the k-th solved query's metrics (every pair solved: see the table)
+        auto metric = [&](const char *label, std::size_t pair, bool drive) {
+            for (const Row &r : rows)
+                if (r.label.find(label) != std::string::npos && r.solved == r.runs)
+                    return drive ? r.drive[pair] : r.lengths[pair];
+            return double(NAN);
+        };
+        std::vector<double> best[2];
         for (std::size_t k = 0; k < posesForBit.size(); ++k)
         {
             const RsResult b = bitstarReedsShepp(*setup.checker, posesForBit[k].first, posesForBit[k].second, o.bitstarTime);
             if (!b.solved)
             {
-                std::printf("| %zu | not solved | | | |\n", k);
+                std::printf("| %zu | not solved | | | | | |\n", bitPairs[k]);
                 continue;
             }
-            std::printf("| %zu | %.1f | %.1f | %.3f | %.3f |\n", k, b.length, b.drive, ours.lengths[k] / b.length,
-                        ours.drive[k] / b.drive);
+            const std::size_t p = bitPairs[k];
+            const double il = metric("integral", p, false) / b.length, id = metric("integral", p, true) / b.drive;
+            const double cl = metric("corner", p, false) / b.length, cd = metric("corner", p, true) / b.drive;
+            best[0].push_back(std::min(il, cl));
+            best[1].push_back(std::min(id, cd));
+            std::printf("| %zu | %.1f | %.1f | %.3f | %.3f | %.3f | %.3f |\n", p, b.length, b.drive, il, id, cl, cd);
             std::fflush(stdout);
         }
+        std::printf("\nbest of ours / BIT*: length median %.3f max %.3f; driving time median %.3f max %.3f\n",
+                    quantile(best[0], 0.5), quantile(best[0], 1.0), quantile(best[1], 0.5), quantile(best[1], 1.0));
     }
 }
 

@@ -155,9 +155,13 @@ void benchmarkQuery(BenchRun &run, std::size_t qi)
     const Problem &p = run.p;
     GridSetup &setup = run.w.setup;
     bool startYaw = false, goalYaw = false;
-    const Pose2 start = readPose(p, p.queries[qi], "start", *run.w.grid, startYaw, qi);
-    const Pose2 goal = readPose(p, p.queries[qi], "goal", *run.w.grid, goalYaw, qi);
+    Pose2 start = readPose(p, p.queries[qi], "start", *run.w.grid, startYaw, qi);
+    Pose2 goal = readPose(p, p.queries[qi], "goal", *run.w.grid, goalYaw, qi);
     const std::string q = "query " + std::to_string(qi + 1);
+    // without a yaw the heading is free: the pose gets the first yaw at which the vehicle fits
+    // (OMPL's planners start there; ours choose their own)
+    if (!startYaw) setup.checker->fitsAtSomeHeading(start.x, start.y, 72, &start.yaw);
+    if (!goalYaw) setup.checker->fitsAtSomeHeading(goal.x, goal.y, 72, &goal.yaw);
     if (!setup.checker->isValid(start)) bad(p, q + ": the start is off the map or in collision for " + run.w.vehicle.name);
     if (!setup.checker->isValid(goal)) bad(p, q + ": the goal is off the map or in collision for " + run.w.vehicle.name);
     setup.ss->clear();

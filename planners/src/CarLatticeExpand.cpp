@@ -128,11 +128,11 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         const int H = lattice_->headings();
         std::vector<int> axis;
         for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
-        h2d_->setAxisTest(axis, [this, H](int i, int j, int a) {
+        h2d_->setAxisTest(axis, [this](int i, int j, int a) {
+            // not proven blocked (a relaxation: the distance field's inscribed discs only)
             const Pose2 p = nodePose(i, j, a);
-            return checker_.isValid(p) || checker_.isValid({p.x, p.y, wrapYaw(p.yaw + M_PI)});
+            return !checker_.provenBlocked(p) || !checker_.provenBlocked({p.x, p.y, p.yaw + M_PI});
         });
-        (void)H;
     }
     if (cost.weighted()) h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });
     // seeds: the nodes round the goal, at their straight-line distance
@@ -177,9 +177,9 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     if (std::getenv("GRIDCAR_DEBUG"))
     {
         const FootprintChecker::Stats st = checker_.stats();
-        std::fprintf(stderr, "car lattice: %llu expanded, %zu states, %zu 2D nodes, %d shots, ratio %.3f; checks: fast free %llu, "
+        std::fprintf(stderr, "car lattice: %llu expanded, %zu states, %zu 2D nodes (%.3f s), %d shots, ratio %.3f; checks: fast free %llu, "
                      "fast hit %llu, discs %llu, FCL %llu\n",
-                     (unsigned long long)res.expanded, keys_.size(), h2d_->closedCount(), shotsTried_, ratio_,
+                     (unsigned long long)res.expanded, keys_.size(), h2d_->closedCount(), h2d_->seconds(), shotsTried_, ratio_,
                      (unsigned long long)(st.fastFree - st0.fastFree), (unsigned long long)(st.fastCollision - st0.fastCollision),
                      (unsigned long long)(st.discFree - st0.discFree), (unsigned long long)(st.exact - st0.exact));
     }

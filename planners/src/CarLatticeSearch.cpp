@@ -173,7 +173,7 @@ bool CarLatticeSearch::fitsAtNode(int i, int j) const
     const Pose2 p = nodePose(i, j, 0);
     bool allBlocked = true;
     for (int h = 0; h < lattice_->headings() && allBlocked; ++h)
-        allBlocked = checker_.quickVerdict({p.x, p.y, wrapYaw(phi_ + lattice_->yaw(h))}) == 0;
+        allBlocked = checker_.provenBlocked({p.x, p.y, phi_ + lattice_->yaw(h)});
     return !allBlocked;
 }
 

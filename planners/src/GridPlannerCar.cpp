@@ -64,7 +64,7 @@ CarLatticeConfig GridPlanner::carLatticeConfig() const
         const double want = std::min(v.isPoint() ? 4 * res : v.width, rmin > 0 ? rmin : 4 * res) / 4;
         cfg.cell = res * std::max(1.0, std::round(want / res));
     }
-    cfg.headings = carHeadings();
+    cfg.headings = latticeHeadings_;
     // arcs 1 % wider than R_min: sampled curves then stay within K_max by a clear margin
     cfg.turnRadius = rmin > 0 ? 1.01 * rmin : cfg.cell;
     cfg.spacing = std::min(res, 0.1);

@@ -1,6 +1,7 @@
 #include "gridcar/planners/search/ObstacleHeuristic.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -139,7 +140,10 @@ double ObstacleHeuristic::distance(int i, int j)
     if (state_[n] & kClosed) return g_[n];
     if (!traversable(i, j)) return kInf;
     if (stopped_) return -1.0;
-    if (expandUntil(n)) return g_[n];
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool found = expandUntil(n);
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (found) return g_[n];
     return stopped_ ? -1.0 : kInf;
 }
 

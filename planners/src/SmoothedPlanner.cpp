@@ -1,5 +1,7 @@
 #include "gridcar/planners/SmoothedPlanner.h"
 
+#include "gridcar/planners/GridPlanner.h"
+
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/goals/GoalRegion.h>
@@ -60,6 +62,9 @@ ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTermin
     if (!pdef->hasSolution()) return st;
     auto *path = pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
     if (!path || path->getStateCount() < 3) return st;
+    // a car-lattice path is drivable as searched: paper I's smoothing would only move it off
+    // the curves whose footprint was checked
+    if (const auto *g = dynamic_cast<const GridPlanner *>(inner_.get()); g && g->carSearch()) return st;
     auto vc = std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker());
     auto out = std::make_shared<ompl::geometric::PathGeometric>(*path);
     last_ = smoothSolutionPath(si_, vc->checker(), *out, raw_);

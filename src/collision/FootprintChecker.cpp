@@ -265,6 +265,31 @@ const FootprintChecker::Body &FootprintChecker::bodyFor(double margin) const
     return s.body;
 }
 
+bool FootprintChecker::provenBlocked(const Pose2 &p) const
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw)) return true;
+    if (vehicle_.isPoint()) return cellBlockedAt(p.x, p.y);
+    const double cs = std::cos(p.yaw), sn = std::sin(p.yaw);
+    const double L = vehicle_.length, W = vehicle_.width, rear = vehicle_.rearOverhang;
+    const double r = std::min(L, W) / 2;
+    // centres along the longer axis where the disc of radius r stays inside the rectangle
+    const double span = std::max(L, W) - 2 * r;
+    const int n = 1 + int(std::ceil(span / std::max(r, 1e-9)));
+    for (int k = 0; k < n; ++k)
+    {
+        const double t = n == 1 ? 0.5 : double(k) / (n - 1);
+        double bx = L / 2 - rear, by = 0;  // centre
+        if (L >= W)
+            bx = -rear + r + t * span;
+        else
+            by = -W / 2 + r + t * span;
+        const Cell c = grid_->worldToCell(p.x + cs * bx - sn * by, p.y + sn * bx + cs * by);
+        if (grid_->isBlocked(c.col, c.row)) return true;
+        if (field_->cellDistance(c.col, c.row) + halfDiag_ < r) return true;
+    }
+    return false;
+}
+
 int FootprintChecker::quickVerdict(const Pose2 &p) const
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw)) return 0;

@@ -84,6 +84,14 @@ public:
     /// The distance-field tests alone (no FCL): 1 proven free, 0 proven in collision, -1 not
     /// decided by them.
     int quickVerdict(const Pose2 &p) const;
+    /**
+     * @brief True only if the distance field proves the rectangle in collision: a blocked
+     * cell under its centre, or a blocked cell centre within r of a point of its axis where the
+     * disc of radius r = min(length, width) / 2 lies inside the rectangle (points r apart from
+     * end to end). A few lookups; false means "not proven", so a test built on it is a
+     * relaxation (the car lattice's 2D heuristic uses it).
+     */
+    bool provenBlocked(const Pose2 &p) const;
     /// Farthest point of the rectangle from the reference point (m): how far a body point moves
     /// per radian of rotation.
     double reach() const { return reach_; }

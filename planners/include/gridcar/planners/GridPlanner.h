@@ -149,8 +149,6 @@ protected:
     virtual bool postProcess(ompl::geometric::PathGeometric &path) { (void)path; return false; }
     /// The cost the car lattice search minimises (a planner that uses it overrides this).
     virtual std::unique_ptr<LatticeCostModel> carCost() const { return std::make_unique<LengthCost>(); }
-    /// Headings the car lattice gets (default: the `headings` parameter).
-    virtual int carHeadings() const { return latticeHeadings_; }
     /// Declares `lattice_cell` and `headings` (for the planners that search the car lattice).
     void declareCarLatticeParams();
 

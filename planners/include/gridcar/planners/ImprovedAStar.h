@@ -17,8 +17,8 @@ namespace gridcar
  * Bezier smoothing.
  *
  * **Lattice** (`lattice`): `car` (default) searches the car lattice (search/CarLattice.h): its
- * own cell size (`lattice_cell`, automatic by default), 8 headings in paper mode (paper I's
- * 8 directions) and 8 or 16 (`headings`, default 16) in integral mode, primitives of curvature
+ * own cell size (`lattice_cell`, automatic by default), 8 or 16 headings (`headings`, default
+ * 16; paper I's 8 directions with 8), primitives of curvature
  * 0 or 1 / (1.01 R_min), footprint certified along every primitive, the obstacle-aware
  * heuristic, and a Dubins curve into the exact goal: its paths are drivable as searched, so
  * `smooth` does not apply. `grid` is the lattice described next, on the map's own cells, kept
@@ -127,7 +127,6 @@ protected:
     void forEachClosed(const std::function<void(std::uint32_t)> &fn) const override;
     bool postProcess(ompl::geometric::PathGeometric &path) override;
     std::unique_ptr<LatticeCostModel> carCost() const override;
-    int carHeadings() const override { return paperMode_ ? 8 : latticeHeadings(); }
 
 private:
     friend struct ImprovedExpander;

@@ -35,6 +35,8 @@ SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, co
  * footprint checker). The time limit covers both. Name: "<inner name>+smooth". Parameters and
  * progress properties are the inner planner's (forwarded). Needs gridcar's
  * FootprintValidityChecker on the space information (ompl::Exception in setup() otherwise).
+ * A grid planner searching the car lattice (corner-astar, improved-astar by default) returns
+ * drivable curves already; its path is passed through unchanged.
  */
 class SmoothedPlanner : public ompl::base::Planner, public SmoothingReport
 {
