@@ -24,6 +24,7 @@ struct CarExpander
     CarLatticeSearch &S;
     const LatticeCostModel &cost;
     std::uint64_t expansions{0};
+    std::vector<Pose2> samples;  ///< reused for every primitive
 
     Pose2 poseOf(std::uint32_t s) const
     {
@@ -42,10 +43,23 @@ struct CarExpander
         const double graph = d < 0 ? 0.0 : d / S.ratio_ - S.seedRadius_ * m;
         return S.query_.weight * std::max(m * e, graph);
     }
+    /// The turning a forward path from (node, heading) to the goal position needs at least:
+    /// somewhere its tangent is parallel to the chord (Rolle), so it turns by at least the
+    /// smaller of the angles between the heading and the chord's two directions.
+    double turnBound(int i, int j, int h) const
+    {
+        const double k = cost.minTurnCostPerRad();
+        if (k <= 0 || !S.query_.aim) return 0.0;
+        const Pose2 p = S.nodePose(i, j, h);
+        const double dx = S.query_.goal.x - p.x, dy = S.query_.goal.y - p.y;
+        if (dx * dx + dy * dy < 1e-12) return 0.0;
+        const double a = std::abs(wrapAngle(std::atan2(dy, dx) - p.yaw));
+        return S.query_.weight * k * std::min(a, M_PI - a);
+    }
     double heuristic(std::uint32_t s) const
     {
         const auto k = S.unpack(S.keys_[s]);
-        return hNode(k.i, k.j);
+        return hNode(k.i, k.j) + turnBound(k.i, k.j, k.h);
     }
     bool isGoal(std::uint32_t s)
     {
@@ -64,10 +78,11 @@ struct CarExpander
             const LatticePrimitive &prim = prims[p];
             const int ni = k.i + prim.di, nj = k.j + prim.dj;
             if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
-            const std::vector<Pose2> samples = S.worldSamples(k.i, k.j, prim);
+            S.worldSamples(k.i, k.j, prim, samples);
             if (!S.motionFree(from, samples)) continue;
-            const double hn = hNode(ni, nj);
+            double hn = hNode(ni, nj);
             if (hn == kInf) continue;
+            hn += turnBound(ni, nj, prim.to);
             const std::uint32_t id = S.intern(ni, nj, prim.to);
             const double c = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
             emit(id, c, [this, id, p, hn] {
@@ -101,7 +116,9 @@ std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
     {
         const auto kp = unpack(keys_[chain[n - 1]]);
         const LatticePrimitive &p = lattice_->primitives(kp.h)[std::size_t(prim_[chain[n]])];
-        for (Pose2 q : worldSamples(kp.i, kp.j, p))
+        std::vector<Pose2> w;
+        worldSamples(kp.i, kp.j, p, w);
+        for (Pose2 q : w)
         {
             q.yaw = wrapYaw(q.yaw);
             path.push_back(q);
@@ -161,12 +178,12 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     SearchResult res;
     if (cost.customPriority())
     {
-        PriorityExpander ex{{*this, cost}};
+        PriorityExpander ex{{*this, cost, 0, {}}};
         res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
     }
     else
     {
-        CarExpander ex{*this, cost};
+        CarExpander ex{*this, cost, 0, {}};
         res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
     }
     out.outcome = res.outcome;
@@ -194,7 +211,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
 double CarLatticeSearch::heuristicAt(int i, int j)
 {
     LengthCost len;
-    CarExpander ex{*this, len};
+    CarExpander ex{*this, len, 0, {}};
     return ex.hNode(i, j);
 }
 

@@ -126,17 +126,15 @@ Pose2 CarLatticeSearch::nodePose(int i, int j, int h) const
     return {ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, wrapYaw(phi_ + lattice_->yaw(h))};
 }
 
-std::vector<Pose2> CarLatticeSearch::worldSamples(int i, int j, const LatticePrimitive &p) const
+void CarLatticeSearch::worldSamples(int i, int j, const LatticePrimitive &p, std::vector<Pose2> &out) const
 {
-    std::vector<Pose2> out;
-    out.reserve(p.samples.size());
+    out.clear();
     const double bx = i * lattice_->cell(), by = j * lattice_->cell();
     for (const Pose2 &s : p.samples)
     {
         const double x = bx + s.x, y = by + s.y;
         out.push_back({ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, phi_ + s.yaw});  // wrapped in buildPath
     }
-    return out;
 }
 
 bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const

@@ -1,5 +1,6 @@
 #include "gridcar/planners/CornerAStar.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -99,6 +100,12 @@ public:
     double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double absTurn) const override
     {
         return length + p_.turnWeight(absTurn);
+    }
+    double minTurnCostPerRad() const override
+    {
+        // turnWeight() is linear between its table points, so w(x) / x is least at one of them
+        const CornerWeights &w = p_.weights();
+        return std::min({w.w45 / (M_PI / 4), w.w90 / (M_PI / 2), w.w135 / (3 * M_PI / 4)});
     }
 
 private:

@@ -34,6 +34,9 @@ public:
     virtual double nodeWeight(const Pose2 &p) const { (void)p; return minCostPerMetre(); }
     /// True if nodeWeight() varies (the 2D search then weighs its edges).
     virtual bool weighted() const { return false; }
+    /// A lower bound of the cost per radian of heading change (beyond the length): the
+    /// heuristic adds it times the least turning any forward path to the goal needs.
+    virtual double minTurnCostPerRad() const { return 0.0; }
     /// Paper I's evaluation: order the open list by priority() instead of g + h.
     virtual bool customPriority() const { return false; }
     virtual double priority(double g, double h, const Pose2 &at) const { (void)at; return g + h; }
@@ -134,7 +137,8 @@ private:
     void setFrame(const CarLatticeQuery &q);
     bool fitsAtNode(int i, int j) const;
     bool tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions);
-    std::vector<Pose2> worldSamples(int i, int j, const LatticePrimitive &p) const;
+    /// The primitive's samples from node (i, j) in world coordinates, into @p out.
+    void worldSamples(int i, int j, const LatticePrimitive &p, std::vector<Pose2> &out) const;
     std::vector<Pose2> buildPath(std::uint32_t end) const;
     double measureRatio() const;
 
