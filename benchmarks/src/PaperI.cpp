@@ -55,7 +55,10 @@ std::vector<PlannerRow> plannerRows()
             {"A* Euclidean", "astar-euclidean", {}, {220, 30, 30}},
             {"improved A* (paper)", "improved-astar", {{"mode", "paper"}, {"lattice", "grid"}}, {20, 60, 220}},
             {"improved A* (integral)", "improved-astar", {{"mode", "integral"}, {"lattice", "grid"}}, {20, 170, 200}},
-            {"corner A*", "corner-astar", {{"mode", "paper"}}, {30, 160, 40}}};
+            {"corner A*", "corner-astar", {{"mode", "paper"}}, {30, 160, 40}},
+            // the car lattice (drivable as searched), beside the papers' grids
+            {"improved A* (car lattice, integral)", "improved-astar", {{"mode", "integral"}}, {250, 140, 0}},
+            {"corner A* (car lattice)", "corner-astar", {}, {150, 0, 150}}};
 }
 
 const char *kTableHeader = "| area | planner | status | time s | length m | expanded | path distance m | footprint clearance m | "
