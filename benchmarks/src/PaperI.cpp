@@ -209,7 +209,8 @@ int runPaperI(const PaperIOptions &o)
         }
     }
     md << "Colours: Dijkstra grey, A* Manhattan orange, A* Euclidean red, improved A* (paper) blue, improved A* "
-          "(integral) cyan, corner A* green; start black, goal magenta.\n";
+          "(integral) cyan, corner A* green, improved A* (car lattice, integral) orange-brown, corner A* (car lattice) "
+          "purple; start black, goal magenta.\n";
     std::ofstream(fs::path(o.outDir) / "paper_i_tables.md") << md.str();
     std::ofstream(fs::path(o.outDir) / "paper_i.json") << all.dump(1) << "\n";
     std::fprintf(stderr, "[paper-i] wrote %s/paper_i_tables.md, paper_i.json and the pictures\n", o.outDir.c_str());
