@@ -145,10 +145,18 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         const int H = lattice_->headings();
         std::vector<int> axis;
         for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
+        discs_.clear();
+        discsBack_.clear();
+        for (int h = 0; h < H; ++h)
+        {
+            discs_.push_back(checker_.inscribedDiscOffsets(phi_ + lattice_->yaw(h)));
+            discsBack_.push_back(checker_.inscribedDiscOffsets(phi_ + lattice_->yaw(h) + M_PI));
+        }
         h2d_->setAxisTest(axis, [this](int i, int j, int a) {
             // not proven blocked (a relaxation: the distance field's inscribed discs only)
             const Pose2 p = nodePose(i, j, a);
-            return !checker_.provenBlocked(p) || !checker_.provenBlocked({p.x, p.y, p.yaw + M_PI});
+            return !checker_.provenBlockedAt(p.x, p.y, discs_[std::size_t(a)]) ||
+                   !checker_.provenBlockedAt(p.x, p.y, discsBack_[std::size_t(a)]);
         });
     }
     if (cost.weighted()) h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });

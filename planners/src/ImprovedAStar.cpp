@@ -270,6 +270,11 @@ public:
     PaperCost(const FootprintChecker &c, double delta, bool voronoi) : c_(c), delta_(delta), voronoi_(voronoi) {}
     double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double) const override { return length; }
     bool customPriority() const override { return true; }
+    double nodeWeight(const Pose2 &p) const override
+    {
+        return 1.0 + obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, p);
+    }
+    bool weighted() const override { return true; }
     double priority(double g, double h, const Pose2 &at) const override
     {
         return ImprovedAStar::paperPriority(g, h, obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, at));

@@ -44,7 +44,8 @@ void ObstacleHeuristic::push(std::size_t n, double g)
 {
     g_[n] = g;
     const int i = int(n % std::size_t(ni_)) + i0_, j = int(n / std::size_t(ni_)) + j0_;
-    const double h = cell_ * std::hypot(double(i - ti_), double(j - tj_));
+    const double di = i - ti_, dj = j - tj_;
+    const double h = cell_ * std::sqrt(di * di + dj * dj);
     heap_.push_back({g + h, g, std::uint32_t(n)});
     std::push_heap(heap_.begin(), heap_.end());
 }

@@ -96,11 +96,11 @@ const FootprintChecker::Body &FootprintChecker::bodyFor(double margin) const
     return s.body;
 }
 
-bool FootprintChecker::provenBlocked(const Pose2 &p) const
+std::vector<std::array<double, 2>> FootprintChecker::inscribedDiscOffsets(double yaw) const
 {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw)) return true;
-    if (vehicle_.isPoint()) return cellBlockedAt(p.x, p.y);
-    const double cs = std::cos(p.yaw), sn = std::sin(p.yaw);
+    std::vector<std::array<double, 2>> out;
+    if (vehicle_.isPoint()) return {{0.0, 0.0}};
+    const double cs = std::cos(yaw), sn = std::sin(yaw);
     const double L = vehicle_.length, W = vehicle_.width, rear = vehicle_.rearOverhang;
     const double r = std::min(L, W) / 2;
     // centres along the longer axis where the disc of radius r stays inside the rectangle
@@ -114,11 +114,28 @@ bool FootprintChecker::provenBlocked(const Pose2 &p) const
             bx = -rear + r + t * span;
         else
             by = -W / 2 + r + t * span;
-        const Cell c = grid_->worldToCell(p.x + cs * bx - sn * by, p.y + sn * bx + cs * by);
+        out.push_back({cs * bx - sn * by, sn * bx + cs * by});
+    }
+    return out;
+}
+
+bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets) const
+{
+    if (!std::isfinite(x) || !std::isfinite(y)) return true;
+    const double r = vehicle_.isPoint() ? 0.0 : std::min(vehicle_.length, vehicle_.width) / 2;
+    for (const auto &o : offsets)
+    {
+        const Cell c = grid_->worldToCell(x + o[0], y + o[1]);
         if (grid_->isBlocked(c.col, c.row)) return true;
         if (field_->cellDistance(c.col, c.row) + halfDiag_ < r) return true;
     }
     return false;
+}
+
+bool FootprintChecker::provenBlocked(const Pose2 &p) const
+{
+    if (!std::isfinite(p.yaw)) return true;
+    return provenBlockedAt(p.x, p.y, inscribedDiscOffsets(p.yaw));
 }
 
 int FootprintChecker::quickVerdict(const Pose2 &p) const

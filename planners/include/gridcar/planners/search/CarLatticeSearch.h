@@ -150,7 +150,9 @@ private:
     int i0_{0}, j0_{0}, ni_{1}, nj_{1};
     CarLatticeQuery query_;
     std::unique_ptr<ObstacleHeuristic> h2d_;
-    bool use2d_{true};  ///< false when the 2D graph cannot join start and goal (Euclid alone then)
+    bool use2d_{true};
+    /// Inscribed-disc offsets per lattice heading (in this query's frame) and its reverse.
+    std::vector<std::vector<std::array<double, 2>>> discs_, discsBack_;  ///< false when the 2D graph cannot join start and goal (Euclid alone then)
     double seedRadius_{0};
     std::unordered_map<std::uint64_t, std::uint32_t> ids_;
     std::vector<std::uint64_t> keys_;
