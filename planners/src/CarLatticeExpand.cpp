@@ -135,23 +135,17 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     const FootprintChecker::Stats st0 = checker_.stats();
     CarLatticeResult out;
     const double c = lattice_->cell();
-    std::vector<std::array<int, 2>> steps;
-    for (int h = 0; h < lattice_->headings(); ++h) steps.push_back({lattice_->vi(h), lattice_->vj(h)});
-    h2d_ = std::make_unique<ObstacleHeuristic>(i0_, j0_, ni_, nj_, steps, c, [this](int i, int j) { return fitsAtNode(i, j); });
-    h2d_->setCancel(cancelled);
+    const int H = lattice_->headings();
+    if (!h2d_)
     {
+        // made once, its node storage reused by every run (ObstacleHeuristic::reset)
+        std::vector<std::array<int, 2>> steps;
+        for (int h = 0; h < H; ++h) steps.push_back({lattice_->vi(h), lattice_->vj(h)});
+        h2d_ = std::make_unique<ObstacleHeuristic>(steps, c, [this](int i, int j) { return fitsAtNode(i, j); });
         // a step along heading k is lined up with axis k mod (H / 2): the car fits there at
         // that heading or its reverse
-        const int H = lattice_->headings();
         std::vector<int> axis;
         for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
-        discs_.clear();
-        discsBack_.clear();
-        for (int h = 0; h < H; ++h)
-        {
-            discs_.push_back(checker_.inscribedDiscOffsets(phi_ + lattice_->yaw(h)));
-            discsBack_.push_back(checker_.inscribedDiscOffsets(phi_ + lattice_->yaw(h) + M_PI));
-        }
         h2d_->setAxisTest(axis, [this](int i, int j, int a) {
             // not proven blocked (a relaxation: the distance field's inscribed discs only)
             const Pose2 p = nodePose(i, j, a);
@@ -159,7 +153,18 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
                    !checker_.provenBlockedAt(p.x, p.y, discsBack_[std::size_t(a)]);
         });
     }
-    if (cost.weighted()) h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });
+    h2d_->setCancel(cancelled);
+    discs_.clear();
+    discsBack_.clear();
+    for (int h = 0; h < H; ++h)
+    {
+        discs_.push_back(checker_.inscribedDiscOffsets(phi_ + lattice_->yaw(h)));
+        discsBack_.push_back(checker_.inscribedDiscOffsets(phi_ + lattice_->yaw(h) + M_PI));
+    }
+    if (cost.weighted())
+        h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });
+    else
+        h2d_->setWeight(nullptr);
     // seeds: the nodes round the goal, at their straight-line distance
     const double gx = cphi_ * (q.goal.x - ox_) + sphi_ * (q.goal.y - oy_), gy = -sphi_ * (q.goal.x - ox_) + cphi_ * (q.goal.y - oy_);
     seedRadius_ = 1.5 * c;
@@ -170,7 +175,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
             const double d = std::hypot(i * c - gx, j * c - gy);
             if (d <= seedRadius_) seeds.push_back({{i, j}, d});
         }
-    h2d_->reset(seeds, 0, 0);
+    h2d_->reset(i0_, j0_, ni_, nj_, seeds, 0, 0);
     use2d_ = q.aim;
     if (use2d_ && h2d_->distance(0, 0) == kInf) use2d_ = false;
     ids_.clear();

@@ -14,12 +14,10 @@ constexpr std::uint8_t kClosed = 1, kAsked = 2, kFree = 4;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
-ObstacleHeuristic::ObstacleHeuristic(int i0, int j0, int ni, int nj, std::vector<std::array<int, 2>> steps, double cell,
+ObstacleHeuristic::ObstacleHeuristic(std::vector<std::array<int, 2>> steps, double cell,
                                      std::function<bool(int, int)> traversable)
-  : i0_(i0), j0_(j0), ni_(ni), nj_(nj), steps_(std::move(steps)), cell_(cell), traversable_(std::move(traversable))
+  : steps_(std::move(steps)), cell_(cell), traversable_(std::move(traversable))
 {
-    if (ni <= 0 || nj <= 0 || double(ni) * double(nj) > 4.0e8)
-        throw std::invalid_argument("obstacle heuristic: node box must be non-empty and at most 4e8 nodes");
     // both directions of every step
     const std::size_t n = steps_.size();
     for (std::size_t k = 0; k < n; ++k)
@@ -28,21 +26,19 @@ ObstacleHeuristic::ObstacleHeuristic(int i0, int j0, int ni, int nj, std::vector
         if (std::find(steps_.begin(), steps_.end(), back) == steps_.end()) steps_.push_back(back);
     }
     for (const auto &s : steps_) stepLen_.push_back(cell_ * std::hypot(double(s[0]), double(s[1])));
-    g_.assign(std::size_t(ni) * std::size_t(nj), kInf);
-    state_.assign(g_.size(), 0);
 }
 
 bool ObstacleHeuristic::traversable(int i, int j)
 {
     if (!inBox(i, j)) return false;
-    std::uint8_t &st = state_[idx(i, j)];
-    if (!(st & kAsked)) st |= kAsked | (traversable_(i, j) ? kFree : 0);
-    return (st & kFree) != 0;
+    Node &x = at(idx(i, j));
+    if (!(x.state & kAsked)) x.state |= kAsked | (traversable_(i, j) ? kFree : 0);
+    return (x.state & kFree) != 0;
 }
 
 void ObstacleHeuristic::push(std::size_t n, double g)
 {
-    g_[n] = g;
+    at(n).g = g;
     const int i = int(n % std::size_t(ni_)) + i0_, j = int(n / std::size_t(ni_)) + j0_;
     const double di = i - ti_, dj = j - tj_;
     const double h = cell_ * std::sqrt(di * di + dj * dj);
@@ -50,12 +46,25 @@ void ObstacleHeuristic::push(std::size_t n, double g)
     std::push_heap(heap_.begin(), heap_.end());
 }
 
-void ObstacleHeuristic::reset(const std::vector<std::pair<std::array<int, 2>, double>> &seeds, int ti, int tj)
+void ObstacleHeuristic::reset(int i0, int j0, int ni, int nj, const std::vector<std::pair<std::array<int, 2>, double>> &seeds,
+                              int ti, int tj)
 {
-    std::fill(g_.begin(), g_.end(), kInf);
-    for (auto &s : state_) s &= std::uint8_t(~kClosed);
+    if (ni <= 0 || nj <= 0 || double(ni) * double(nj) > 4.0e8)
+        throw std::invalid_argument("obstacle heuristic: node box must be non-empty and at most 4e8 nodes");
+    i0_ = i0;
+    j0_ = j0;
+    ni_ = ni;
+    nj_ = nj;
+    const std::size_t need = std::size_t(ni) * std::size_t(nj);
+    if (nodes_.size() < need) nodes_.resize(need, Node{0.0, -1.0f, 0, 0, 0, 0});
+    if (++epoch_ == 0)  // wrapped: every stamp is stale again
+    {
+        for (Node &x : nodes_) x.stamp = 0;
+        epoch_ = 1;
+    }
     heap_.clear();
     closedCount_ = 0;
+    seconds_ = 0.0;
     stopped_ = false;
     ti_ = ti;
     tj_ = tj;
@@ -63,7 +72,7 @@ void ObstacleHeuristic::reset(const std::vector<std::pair<std::array<int, 2>, do
     {
         if (!inBox(s.first[0], s.first[1])) continue;
         const std::size_t n = idx(s.first[0], s.first[1]);
-        if (s.second < g_[n]) push(n, s.second);
+        if (s.second < at(n).g) push(n, s.second);
     }
 }
 
@@ -72,26 +81,25 @@ void ObstacleHeuristic::setAxisTest(std::vector<int> stepAxis, std::function<boo
     stepAxis_ = std::move(stepAxis);
     stepAxis_.resize(steps_.size(), -1);  // reverse steps added by the constructor: no test
     fitsAxis_ = std::move(fitsAxis);
-    axisAsked_.assign(g_.size(), 0);
-    axisOk_.assign(g_.size(), 0);
 }
 
 bool ObstacleHeuristic::axisFits(std::size_t n, int i, int j, int axis)
 {
     const auto bit = std::uint16_t(1u << axis);
-    if (!(axisAsked_[n] & bit))
+    Node &x = at(n);
+    if (!(x.axisAsked & bit))
     {
-        axisAsked_[n] |= bit;
-        if (fitsAxis_(i, j, axis)) axisOk_[n] |= bit;
+        x.axisAsked = std::uint16_t(x.axisAsked | bit);
+        if (fitsAxis_(i, j, axis)) x.axisOk = std::uint16_t(x.axisOk | bit);
     }
-    return (axisOk_[n] & bit) != 0;
+    return (x.axisOk & bit) != 0;
 }
 
 double ObstacleHeuristic::weightAt(std::size_t n, int i, int j)
 {
-    if (w_.empty()) w_.assign(g_.size(), -1.0f);
-    if (w_[n] < 0) w_[n] = float(std::max(1.0, weight_(i, j)));
-    return w_[n];
+    Node &x = at(n);
+    if (x.w < 0) x.w = float(std::max(1.0, weight_(i, j)));
+    return x.w;
 }
 
 bool ObstacleHeuristic::expandUntil(std::size_t target)
@@ -106,8 +114,9 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
         std::pop_heap(heap_.begin(), heap_.end());
         const Entry e = heap_.back();
         heap_.pop_back();
-        if ((state_[e.n] & kClosed) || e.g > g_[e.n]) continue;
-        state_[e.n] |= kClosed;
+        Node &en = at(e.n);
+        if ((en.state & kClosed) || e.g > en.g) continue;
+        en.state |= kClosed;
         ++closedCount_;
         const int i = int(e.n % std::size_t(ni_)) + i0_, j = int(e.n / std::size_t(ni_)) + j0_;
         for (std::size_t k = 0; k < steps_.size(); ++k)
@@ -115,7 +124,7 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
             const int a = i + steps_[k][0], b = j + steps_[k][1];
             if (!inBox(a, b)) continue;
             const std::size_t m = idx(a, b);
-            if (state_[m] & kClosed) continue;
+            if (at(m).state & kClosed) continue;
             if (fitsAxis_ && stepAxis_[k] >= 0)
             {
                 // the oriented test implies the node test
@@ -126,7 +135,7 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
             double len = stepLen_[k];
             if (weight_) len *= std::min(weightAt(e.n, i, j), weightAt(m, a, b));
             const double ng = e.g + len;
-            if (ng >= g_[m]) continue;
+            if (ng >= at(m).g) continue;
             push(m, ng);
         }
         if (e.n == target) return true;
@@ -138,13 +147,13 @@ double ObstacleHeuristic::distance(int i, int j)
 {
     if (!inBox(i, j)) return kInf;
     const std::size_t n = idx(i, j);
-    if (state_[n] & kClosed) return g_[n];
+    if (at(n).state & kClosed) return at(n).g;
     if (!traversable(i, j)) return kInf;
     if (stopped_) return -1.0;
     const auto t0 = std::chrono::steady_clock::now();
     const bool found = expandUntil(n);
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (found) return g_[n];
+    if (found) return at(n).g;
     return stopped_ ? -1.0 : kInf;
 }
 

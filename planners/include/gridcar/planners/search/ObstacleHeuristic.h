@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace gridcar
@@ -39,12 +40,16 @@ namespace gridcar
 class ObstacleHeuristic
 {
 public:
-    /// Nodes i in [i0, i0 + ni), j in [j0, j0 + nj); @p traversable is asked at most once per node.
-    ObstacleHeuristic(int i0, int j0, int ni, int nj, std::vector<std::array<int, 2>> steps, double cell,
-                      std::function<bool(int, int)> traversable);
+    /// @p traversable is asked at most once per node and search.
+    ObstacleHeuristic(std::vector<std::array<int, 2>> steps, double cell, std::function<bool(int, int)> traversable);
 
-    /// Starts a new search: seeds (node, initial cost) and the target node.
-    void reset(const std::vector<std::pair<std::array<int, 2>, double>> &seeds, int ti, int tj);
+    /// Starts a new search over nodes i in [i0, i0 + ni), j in [j0, j0 + nj) from the seeds
+    /// (node, initial cost) towards the target node. The node storage is kept from search to
+    /// search and invalidated by a stamp, not cleared: a query pays for the nodes it touches,
+    /// not for the size of the map. Throws std::invalid_argument for an empty box or one above
+    /// 4e8 nodes.
+    void reset(int i0, int j0, int ni, int nj, const std::vector<std::pair<std::array<int, 2>, double>> &seeds, int ti,
+               int tj);
     /// Shortest distance (m) from node (i, j) to the goal; +inf when unreachable or off the box;
     /// -1 when the search was cancelled before it knew (the caller falls back to a bound).
     double distance(int i, int j);
@@ -70,7 +75,7 @@ private:
     bool expandUntil(std::size_t target);
     double weightAt(std::size_t n, int i, int j);
     void push(std::size_t n, double g);
-    int i0_, j0_, ni_, nj_;
+    int i0_{0}, j0_{0}, ni_{0}, nj_{0};
     std::vector<std::array<int, 2>> steps_;
     std::vector<double> stepLen_;
     double cell_;
@@ -78,14 +83,27 @@ private:
     std::function<bool(int, int)> traversable_;
     std::function<bool()> cancelled_;
     std::function<double(int, int)> weight_;
-    std::vector<float> w_;  ///< cached node weights (< 0: not computed)
     std::vector<int> stepAxis_;
     std::function<bool(int, int, int)> fitsAxis_;
-    std::vector<std::uint16_t> axisAsked_, axisOk_;
     bool axisFits(std::size_t n, int i, int j, int axis);
     bool stopped_{false};
-    std::vector<double> g_;
-    std::vector<std::uint8_t> state_;  ///< bit 0 closed, bit 1 asked, bit 2 traversable
+    struct Node
+    {
+        double g;
+        float w;  ///< cached edge weight (< 0: not computed)
+        std::uint32_t stamp;
+        std::uint16_t axisAsked, axisOk;
+        std::uint8_t state;  ///< bit 0 closed, bit 1 asked, bit 2 traversable
+    };
+    std::vector<Node> nodes_;
+    std::uint32_t epoch_{0};
+    /// The node, reset to "not seen" if it was last touched by an earlier search.
+    Node &at(std::size_t n)
+    {
+        Node &x = nodes_[n];
+        if (x.stamp != epoch_) x = Node{std::numeric_limits<double>::infinity(), -1.0f, epoch_, 0, 0, 0};
+        return x;
+    }
     struct Entry
     {
         double f, g;
