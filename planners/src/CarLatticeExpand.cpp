@@ -179,6 +179,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     use2d_ = q.aim;
     if (use2d_ && h2d_->distance(0, 0) == kInf) use2d_ = false;
     ids_.clear();
+    ids_.reserve(4096);  // a typical query's states without rehashing on the way
     keys_.clear();
     prim_.clear();
     shotFrom_ = SearchSpace::kNoParent;
