@@ -105,7 +105,7 @@ std::vector<std::array<double, 2>> FootprintChecker::inscribedDiscOffsets(double
     const double r = std::min(L, W) / 2;
     // centres along the longer axis where the disc of radius r stays inside the rectangle
     const double span = std::max(L, W) - 2 * r;
-    const int n = 1 + int(std::ceil(span / std::max(r, 1e-9)));
+    const int n = 1 + int(std::ceil(span / std::max(2 * r, 1e-9)));  // discs at most 2 r apart: any subset proves
     for (int k = 0; k < n; ++k)
     {
         const double t = n == 1 ? 0.5 : double(k) / (n - 1);

@@ -88,7 +88,7 @@ public:
     /**
      * @brief True only if the distance field proves the rectangle in collision: a blocked
      * cell under its centre, or a blocked cell centre within r of a point of its axis where the
-     * disc of radius r = min(length, width) / 2 lies inside the rectangle (points r apart from
+     * disc of radius r = min(length, width) / 2 lies inside the rectangle (points at most 2 r apart from
      * end to end). A few lookups; false means "not proven", so a test built on it is a
      * relaxation (the car lattice's 2D heuristic uses it).
      */
