@@ -44,12 +44,13 @@ struct Config
     PlannerParams params;
 };
 
-const std::vector<Config> &configs()
+/// The three configurations; corner A* in @p cornerMode (`paper`: paper C's 8-connected grid;
+/// `drivable`: the car lattice).
+std::vector<Config> configs(const std::string &cornerMode)
 {
-    static const std::vector<Config> c = {{"A* Euclidean", "astar-euclidean", {}},
-                                          {"corner A* (paper weights)", "corner-astar", {{"mode", "paper"}, {"weights", "paper"}}},
-                                          {"corner A* (physics weights)", "corner-astar", {{"mode", "paper"}, {"weights", "physics"}}}};
-    return c;
+    return {{"A* Euclidean", "astar-euclidean", {}},
+            {"corner A* (paper weights)", "corner-astar", {{"mode", cornerMode}, {"weights", "paper"}}},
+            {"corner A* (physics weights)", "corner-astar", {{"mode", cornerMode}, {"weights", "physics"}}}};
 }
 
 /// How one configuration did on one pair.
@@ -137,7 +138,7 @@ void runPairs(const PaperCOptions &o, const MapCase &mc, const std::string &vnam
                       std::hypot(pairs[k].first.x - pairs[k].second.x, pairs[k].first.y - pairs[k].second.y), {}};
         nlohmann::json jp = {{"map", pr.map}, {"vehicle", pr.vehicle}, {"pair", pr.pair}, {"straight", pr.straight},
                              {"start", {pairs[k].first.x, pairs[k].first.y}}, {"goal", {pairs[k].second.x, pairs[k].second.y}}};
-        for (const Config &c : configs())
+        for (const Config &c : configs(o.cornerMode))
         {
             const Drive d = planAndDrive(setup, c.planner, c.params, pairs[k].first, pairs[k].second, o.timeLimit);
             jp[c.label] = {{"length", d.length}, {"turns", d.turns}, {"profile_time", d.profileTime},
@@ -210,7 +211,7 @@ nlohmann::json weightSweep(const PaperCOptions &o, const MapCase &campus, std::o
     {
         double tt = 0, tl = 0, tn = 0, baseTotal = 0;  // baseTotal: A* on the same pairs
         int ok = 0;
-        const PlannerParams weights = {{"mode", "paper"},
+        const PlannerParams weights = {{"mode", o.cornerMode},
                                        {"corner_weight_45", std::to_string(2.7 * f)},
                                        {"corner_weight_90", std::to_string(7.0 * f)},
                                        {"corner_weight_135", std::to_string(11.3 * f)}};

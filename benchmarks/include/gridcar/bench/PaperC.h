@@ -15,6 +15,9 @@ struct PaperCOptions
     int pairs{20};
     unsigned long long seed{1};
     double timeLimit{20.0};
+    /// corner A*'s `mode`: `paper` (paper C's 8-connected grid, the reproduction) or
+    /// `drivable` (the car lattice)
+    std::string cornerMode{"paper"};
 };
 
 /// Writes paper_c_tables.md and paper_c.json into outDir. Returns the exit status (0).
