@@ -138,6 +138,8 @@ void compareGrown(const std::shared_ptr<const OccupancyGrid> &g, const VehiclePa
             hits += ref;
             if (ref && valid) ++wrongFree;
             if (ref && fc.provenFree(p, m)) ++wrongFree;
+            // the 2D heuristic's relaxation: a pose "proven blocked" must really collide
+            if (m == 0 && fc.provenBlocked(p) && !ref) ++wrongHit;
             // the brute force samples at 1/8 cell: a free verdict it gives may still touch
             if (!ref && !valid && !bruteCollides(*g, grown(v, m + g->resolution() / 4), p)) ++wrongHit;
         }

@@ -239,7 +239,7 @@ TEST(FootprintChecker, AgreesWithRasterisationOnRealMaps)
         compareOnRandomPoses(fc, 3000, 11, disagreements, ambiguous, collisions);
         total += 3000;
         const auto st = fc.stats();
-        EXPECT_GT(st.exact, 0u) << m;  // the exact FCL path really ran
+        EXPECT_GT(st.exact, 0u) << m;  // the exact test (beyond the distance-field shortcuts) really ran
     }
     EXPECT_EQ(disagreements, 0) << "of " << total << " poses (" << ambiguous << " touching within 1e-9)";
     EXPECT_GT(collisions, 100);

@@ -6,8 +6,6 @@
 #include "gridcar/core/Angles.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 
@@ -132,7 +130,6 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
                                        const std::function<bool()> &cancelled, std::uint64_t *progress)
 {
     setFrame(q);
-    const FootprintChecker::Stats st0 = checker_.stats();
     CarLatticeResult out;
     const double c = lattice_->cell();
     const int H = lattice_->headings();
@@ -179,7 +176,6 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     use2d_ = q.aim;
     if (use2d_ && h2d_->distance(0, 0) == kInf) use2d_ = false;
     ids_.clear();
-    ids_.reserve(4096);  // a typical query's states without rehashing on the way
     keys_.clear();
     prim_.clear();
     shotFrom_ = SearchSpace::kNoParent;
@@ -205,15 +201,6 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     out.states = keys_.size();
     out.heuristicNodes = h2d_->closedCount();
     out.shotsTried = shotsTried_;
-    if (std::getenv("GRIDCAR_DEBUG"))
-    {
-        const FootprintChecker::Stats st = checker_.stats();
-        std::fprintf(stderr, "car lattice: %llu expanded, %zu states, %zu 2D nodes (%.3f s), %d shots, ratio %.3f; checks: fast free %llu, "
-                     "fast hit %llu, discs %llu, FCL %llu\n",
-                     (unsigned long long)res.expanded, keys_.size(), h2d_->closedCount(), h2d_->seconds(), shotsTried_, ratio_,
-                     (unsigned long long)(st.fastFree - st0.fastFree), (unsigned long long)(st.fastCollision - st0.fastCollision),
-                     (unsigned long long)(st.discFree - st0.discFree), (unsigned long long)(st.exact - st0.exact));
-    }
     const std::uint32_t end = res.outcome == SearchOutcome::Found ? res.goal : res.closest;
     if (end == SearchSpace::kNoParent) return out;
     out.exact = res.outcome == SearchOutcome::Found;

@@ -171,8 +171,7 @@ bool CarLatticeSearch::fitsAtNode(int i, int j) const
     const Pose2 p = nodePose(i, j, 0);
     bool allBlocked = true;
     for (int h = 0; h < lattice_->headings() && allBlocked; ++h)
-        allBlocked = discs_.size() == std::size_t(lattice_->headings()) ? checker_.provenBlockedAt(p.x, p.y, discs_[std::size_t(h)]) :
-                                                                       checker_.provenBlocked({p.x, p.y, phi_ + lattice_->yaw(h)});
+        allBlocked = checker_.provenBlockedAt(p.x, p.y, discs_[std::size_t(h)]);  // discs_: set by run()
     return !allBlocked;
 }
 

@@ -240,21 +240,14 @@ double obstacleCostAtPoint(const DistanceField &f, const OccupancyGrid &g, doubl
     return d > 0 ? delta / d : std::numeric_limits<double>::infinity();
 }
 
-/// Integral mode on the car lattice: length x (1 + o), o averaged over the primitive's samples.
-class IntegralCost : public LatticeCostModel
+/// What both of paper I's costs on the car lattice need: o(n) at a pose, and the 2D
+/// heuristic's edges weighted by 1 + o.
+class ObstacleCostModel : public LatticeCostModel
 {
 public:
-    IntegralCost(const FootprintChecker &c, double delta, bool voronoi) : c_(c), delta_(delta), voronoi_(voronoi) {}
-    double stepCost(const Pose2 &, const std::vector<Pose2> &samples, double length, double) const override
-    {
-        double o = 0;
-        for (const Pose2 &p : samples) o += obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, p);
-        return length * (1.0 + o / double(std::max<std::size_t>(1, samples.size())));
-    }
-    double nodeWeight(const Pose2 &p) const override
-    {
-        return 1.0 + obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, p);
-    }
+    ObstacleCostModel(const FootprintChecker &c, double delta, bool voronoi) : c_(c), delta_(delta), voronoi_(voronoi) {}
+    double o(const Pose2 &p) const { return obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, p); }
+    double nodeWeight(const Pose2 &p) const override { return 1.0 + o(p); }
     bool weighted() const override { return true; }
 
 private:
@@ -263,27 +256,27 @@ private:
     bool voronoi_;
 };
 
-/// Paper mode on the car lattice: g = length, open list ordered by eq. 4-5 with o at the node.
-class PaperCost : public LatticeCostModel
+/// Integral mode on the car lattice: length x (1 + o), o averaged over the primitive's samples.
+class IntegralCost : public ObstacleCostModel
 {
 public:
-    PaperCost(const FootprintChecker &c, double delta, bool voronoi) : c_(c), delta_(delta), voronoi_(voronoi) {}
+    using ObstacleCostModel::ObstacleCostModel;
+    double stepCost(const Pose2 &, const std::vector<Pose2> &samples, double length, double) const override
+    {
+        double sum = 0;
+        for (const Pose2 &p : samples) sum += o(p);
+        return length * (1.0 + sum / double(std::max<std::size_t>(1, samples.size())));
+    }
+};
+
+/// Paper mode on the car lattice: g = length, open list ordered by eq. 4-5 with o at the node.
+class PaperCost : public ObstacleCostModel
+{
+public:
+    using ObstacleCostModel::ObstacleCostModel;
     double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double) const override { return length; }
     bool customPriority() const override { return true; }
-    double nodeWeight(const Pose2 &p) const override
-    {
-        return 1.0 + obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, p);
-    }
-    bool weighted() const override { return true; }
-    double priority(double g, double h, const Pose2 &at) const override
-    {
-        return ImprovedAStar::paperPriority(g, h, obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, at));
-    }
-
-private:
-    const FootprintChecker &c_;
-    double delta_;
-    bool voronoi_;
+    double priority(double g, double h, const Pose2 &at) const override { return ImprovedAStar::paperPriority(g, h, o(at)); }
 };
 }  // namespace
 

@@ -1,7 +1,6 @@
 #include "gridcar/planners/search/ObstacleHeuristic.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -64,7 +63,6 @@ void ObstacleHeuristic::reset(int i0, int j0, int ni, int nj, const std::vector<
     }
     heap_.clear();
     closedCount_ = 0;
-    seconds_ = 0.0;
     stopped_ = false;
     ti_ = ti;
     tj_ = tj;
@@ -150,10 +148,7 @@ double ObstacleHeuristic::distance(int i, int j)
     if (at(n).state & kClosed) return at(n).g;
     if (!traversable(i, j)) return kInf;
     if (stopped_) return -1.0;
-    const auto t0 = std::chrono::steady_clock::now();
-    const bool found = expandUntil(n);
-    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (found) return at(n).g;
+    if (expandUntil(n)) return at(n).g;
     return stopped_ ? -1.0 : kInf;
 }
 

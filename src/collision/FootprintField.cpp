@@ -138,14 +138,6 @@ bool FootprintChecker::provenBlocked(const Pose2 &p) const
     return provenBlockedAt(p.x, p.y, inscribedDiscOffsets(p.yaw));
 }
 
-int FootprintChecker::quickVerdict(const Pose2 &p) const
-{
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw)) return 0;
-    if (vehicle_.isPoint()) return cellBlockedAt(p.x, p.y) ? 0 : 1;
-    const int q = quickBody(body_, p.x, p.y, p.yaw, std::cos(p.yaw), std::sin(p.yaw));
-    return q >= 1 ? 1 : q;
-}
-
 bool FootprintChecker::provenFree(const Pose2 &p, double margin) const
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw) || !std::isfinite(margin)) return false;

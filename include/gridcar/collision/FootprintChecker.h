@@ -82,9 +82,6 @@ public:
     /// The distance-field tests alone for the rectangle grown by @p margin: true only when
     /// they prove it free (no FCL; false means "not proven", not "in collision").
     bool provenFree(const Pose2 &p, double margin) const;
-    /// The distance-field tests alone (no FCL): 1 proven free, 0 proven in collision, -1 not
-    /// decided by them.
-    int quickVerdict(const Pose2 &p) const;
     /**
      * @brief True only if the distance field proves the rectangle in collision: a blocked
      * cell under its centre, or a blocked cell centre within r of a point of its axis where the

@@ -65,8 +65,6 @@ public:
     bool inBox(int i, int j) const { return i >= i0_ && j >= j0_ && i < i0_ + ni_ && j < j0_ + nj_; }
     /// Nodes closed so far (for benchmarks).
     std::size_t closedCount() const { return closedCount_; }
-    /// Seconds spent searching (for benchmarks).
-    double seconds() const { return seconds_; }
     /// True if the node was asked about and is traversable.
     bool traversable(int i, int j);
 
@@ -112,7 +110,6 @@ private:
     };
     std::vector<Entry> heap_;
     std::size_t closedCount_{0};
-    double seconds_{0.0};
 };
 
 }  // namespace gridcar
