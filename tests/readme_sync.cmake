@@ -1,9 +1,15 @@
-# Fails when README.md's example differs from the compiled one in tests/test_readme_example.cpp.
+# Fails when README.md's examples differ from the compiled ones in tests/test_readme_example.cpp
+# (the lines between each pair of markers: README-EXAMPLE and README-PLUGIN).
 file(READ "${SOURCE_DIR}/tests/test_readme_example.cpp" src)
 file(READ "${SOURCE_DIR}/README.md" readme)
-string(REGEX MATCH "// README-EXAMPLE-BEGIN\n(.*)// README-EXAMPLE-END" _ "${src}")
-set(example "${CMAKE_MATCH_1}")
-string(FIND "${readme}" "${example}" pos)
-if(pos EQUAL -1)
-  message(FATAL_ERROR "README.md does not contain the example of tests/test_readme_example.cpp verbatim")
-endif()
+foreach(marker EXAMPLE PLUGIN)
+  string(REGEX MATCH "// README-${marker}-BEGIN\n(.*)// README-${marker}-END" _ "${src}")
+  set(example "${CMAKE_MATCH_1}")
+  if(example STREQUAL "")
+    message(FATAL_ERROR "tests/test_readme_example.cpp has no README-${marker} block")
+  endif()
+  string(FIND "${readme}" "${example}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "README.md does not contain the README-${marker} example of tests/test_readme_example.cpp verbatim")
+  endif()
+endforeach()

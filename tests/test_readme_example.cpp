@@ -36,3 +36,46 @@ bool planOnCampus()
 // README-EXAMPLE-END
 
 TEST(ReadmeExample, PlansOnTheCampus) { EXPECT_TRUE(planOnCampus()); }
+
+// README-PLUGIN-BEGIN
+#include <gridcar/planners/PlannerFactory.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+#include <ompl/geometric/SimpleSetup.h>
+
+// the application's own validity check: three 1 m discs cover its car; two round obstacles
+bool carIsFree(const ompl::base::State *state)
+{
+    const auto *s = state->as<ompl::base::SE2StateSpace::StateType>();
+    for (double along : {-0.25, 1.25, 2.75})
+    {
+        const double x = s->getX() + along * std::cos(s->getYaw()), y = s->getY() + along * std::sin(s->getYaw());
+        if (std::hypot(x - 25, y - 20) < 9.0 || std::hypot(x - 45, y - 45) < 8.0) return false;
+    }
+    return true;
+}
+
+bool planWithCornerAStar()
+{
+    auto space = std::make_shared<ompl::base::ReedsSheppStateSpace>(5.0);  // 5 m turning radius
+    ompl::base::RealVectorBounds bounds(2);
+    bounds.setLow(0.0);
+    bounds.setHigh(60.0);
+    space->setBounds(bounds);
+    ompl::geometric::SimpleSetup ss(space);
+    ss.setStateValidityChecker(carIsFree);
+    ompl::base::ScopedState<ompl::base::SE2StateSpace> start(space), goal(space);
+    start->setXY(5, 5);
+    start->setYaw(0);
+    goal->setXY(55, 30);
+    goal->setYaw(M_PI / 2);
+    ss.setStartAndGoalStates(start, goal);
+    // gridcar's planner on the application's space and checker: a car lattice with the
+    // space's turning radius, every pose checked by carIsFree
+    ompl::base::PlannerPtr planner = gridcar::makePlanner(ss.getSpaceInformation(), "corner-astar");
+    planner->params().setParam("match_goal_heading", "1");
+    ss.setPlanner(planner);
+    return ss.solve(5.0) == ompl::base::PlannerStatus::EXACT_SOLUTION;
+}
+// README-PLUGIN-END
+
+TEST(ReadmeExample, PlugsCornerAStarIntoAPlainOmplSetup) { EXPECT_TRUE(planWithCornerAStar()); }

@@ -144,20 +144,14 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         std::vector<int> axis;
         for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
         h2d_->setAxisTest(axis, [this](int i, int j, int a) {
-            // not proven blocked (a relaxation: the distance field's inscribed discs only)
             const Pose2 p = nodePose(i, j, a);
-            return !checker_.provenBlockedAt(p.x, p.y, discs_[std::size_t(a)]) ||
-                   !checker_.provenBlockedAt(p.x, p.y, discsBack_[std::size_t(a)]);
+            return col_->mayStandOnAxis(p.x, p.y, a);
         });
     }
     h2d_->setCancel(cancelled);
-    discs_.clear();
-    discsBack_.clear();
-    for (int h = 0; h < H; ++h)
-    {
-        discs_.push_back(checker_.inscribedDiscOffsets(phi_ + lattice_->yaw(h)));
-        discsBack_.push_back(checker_.inscribedDiscOffsets(phi_ + lattice_->yaw(h) + M_PI));
-    }
+    std::vector<double> yaws;
+    for (int h = 0; h < H; ++h) yaws.push_back(phi_ + lattice_->yaw(h));
+    col_->setHeadings(yaws);
     if (cost.weighted())
         h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });
     else
@@ -184,7 +178,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     shotsTried_ = 0;
     std::vector<std::uint32_t> starts;
     for (int h = 0; h < lattice_->headings(); ++h)
-        if (q.freeStartHeading ? checker_.isValid(nodePose(0, 0, h)) : h == 0) starts.push_back(intern(0, 0, h));
+        if (q.freeStartHeading ? col_->poseFree(nodePose(0, 0, h)) : h == 0) starts.push_back(intern(0, 0, h));
     SearchResult res;
     if (cost.customPriority())
     {

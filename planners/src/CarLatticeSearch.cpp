@@ -48,7 +48,12 @@ struct CarLatticeSearch::Dubins
 };
 
 CarLatticeSearch::CarLatticeSearch(const FootprintChecker &checker, std::shared_ptr<const CarLattice> lattice)
-  : checker_(checker), lattice_(std::move(lattice)), dubins_(std::make_unique<Dubins>(lattice_->config().turnRadius))
+  : CarLatticeSearch(std::make_shared<FootprintCollision>(checker), std::move(lattice))
+{
+}
+
+CarLatticeSearch::CarLatticeSearch(std::shared_ptr<CarCollision> collision, std::shared_ptr<const CarLattice> lattice)
+  : col_(std::move(collision)), lattice_(std::move(lattice)), dubins_(std::make_unique<Dubins>(lattice_->config().turnRadius))
 {
     ratio_ = measureRatio();
 }
@@ -139,24 +144,7 @@ void CarLatticeSearch::worldSamples(int i, int j, const LatticePrimitive &p, std
 
 bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
 {
-    // Blocks of kStride poses. A block whose two end poses the distance field alone proves free
-    // with the rectangle grown by kStride x margin is free (no body point moves more than
-    // kStride x spacing between them); otherwise each of its poses is checked exactly with the
-    // margin. In open space this takes a quarter of the lookups and never reaches FCL; it stops
-    // at the first pose in collision.
-    constexpr int kStride = 4;
-    const double m = lattice_->margin(), mc = kStride * m;
-    bool prevProven = checker_.provenFree(from, mc);
-    for (int b = 1; b <= n; b += kStride)
-    {
-        const int e = std::min(n, b + kStride - 1);
-        const bool endProven = checker_.provenFree(poseAt(e), mc);
-        if (!(prevProven && endProven))
-            for (int i = b; i <= e; ++i)
-                if (!checker_.isValidInflated(poseAt(i), m)) return false;
-        prevProven = endProven;
-    }
-    return true;
+    return col_->curveFree(from, n, poseAt, lattice_->margin());
 }
 
 bool CarLatticeSearch::motionFree(const Pose2 &from, const std::vector<Pose2> &poses) const
@@ -166,13 +154,10 @@ bool CarLatticeSearch::motionFree(const Pose2 &from, const std::vector<Pose2> &p
 
 bool CarLatticeSearch::fitsAtNode(int i, int j) const
 {
-    // A relaxation, so that the heuristic stays a lower bound: false only where the distance
-    // field proves the car in collision at every lattice heading, true otherwise (no FCL).
+    // a relaxation with gridcar's checker, so that the heuristic stays a lower bound: false
+    // only where the distance field proves the car in collision at every lattice heading
     const Pose2 p = nodePose(i, j, 0);
-    bool allBlocked = true;
-    for (int h = 0; h < lattice_->headings() && allBlocked; ++h)
-        allBlocked = checker_.provenBlockedAt(p.x, p.y, discs_[std::size_t(h)]);  // discs_: set by run()
-    return !allBlocked;
+    return col_->mayStandAt(p.x, p.y);
 }
 
 void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
@@ -183,11 +168,11 @@ void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
     phi_ = q.freeStartHeading ? 0.0 : wrapYaw(q.start.yaw);
     cphi_ = std::cos(phi_);
     sphi_ = std::sin(phi_);
-    const OccupancyGrid &g = checker_.grid();
+    const std::array<double, 4> box = col_->extent();
     const double c = lattice_->cell();
     double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf};
-    for (double wx : {g.originX(), g.originX() + g.sizeX()})
-        for (double wy : {g.originY(), g.originY() + g.sizeY()})
+    for (double wx : {box[0], box[2]})
+        for (double wy : {box[1], box[3]})
         {
             const double x = cphi_ * (wx - ox_) + sphi_ * (wy - oy_), y = -sphi_ * (wx - ox_) + cphi_ * (wy - oy_);
             lo[0] = std::min(lo[0], x);
@@ -246,7 +231,7 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         ++shotsTried_;
         Dubins::set(D.b, {g.x, g.y, y});
         const auto path = D.space.dubins(D.a, D.b);
-        const int n = std::max(1, int(std::ceil(len * (1.0 + checker_.reach() / R) / lattice_->config().spacing)));
+        const int n = std::max(1, int(std::ceil(len * (1.0 + col_->reach() / R) / lattice_->config().spacing)));
         auto poseAt = [&](int i) {
             D.space.interpolate(D.a, path, double(i) / n, D.c);
             const auto *st = D.c->as<ompl::base::SE2StateSpace::StateType>();

@@ -141,11 +141,7 @@ void CornerAStar::setup()
 {
     GridPlanner::setup();
     if (physics_)
-    {
-        if (!checker_)
-            throw ompl::Exception(getName(), "weights=physics needs gridcar's footprint validity checker (vehicle)");
-        weights_ = physicsCornerWeights(checker_->vehicle());
-    }
+        weights_ = physicsCornerWeights(vehicle());  // without gridcar's checker: the default car
     else
         weights_ = userWeights_;
 }

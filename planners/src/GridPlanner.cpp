@@ -26,6 +26,9 @@ GridPlanner::GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::s
                        &GridPlanner::allowCornerCutting, "0,1");
     declareParam<bool>("free_start_heading", this, &GridPlanner::setFreeStartHeading,
                        &GridPlanner::freeStartHeading, "0,1");
+    declareParam<double>("turning_radius", this, &GridPlanner::setTurningRadius, &GridPlanner::turningRadiusParam,
+                         "0.:0.1:100.");
+    declareParam<double>("lattice_cell", this, &GridPlanner::setLatticeCell, &GridPlanner::latticeCell, "0.:0.05:5.");
     declareParam<bool>("match_goal_heading", this, &GridPlanner::setMatchGoalHeading,
                        &GridPlanner::matchGoalHeading, "0,1");
     addPlannerProgressProperty("expanded nodes INTEGER",
@@ -57,11 +60,14 @@ void GridPlanner::setAllowCornerCutting(bool v)
 void GridPlanner::setup()
 {
     ompl::base::Planner::setup();
-    space_ = std::dynamic_pointer_cast<GridSE2StateSpace>(si_->getStateSpace());
-    if (!space_)
-        throw ompl::Exception(getName(), "needs a gridcar::GridSE2StateSpace (see gridcar::makeGridSetup)");
+    if (!dynamic_cast<const ompl::base::SE2StateSpace *>(si_->getStateSpace().get()))
+        throw ompl::Exception(getName(), "needs a state space derived from ompl::base::SE2StateSpace (plain SE2, "
+                                         "Dubins, Reeds-Shepp or gridcar::GridSE2StateSpace)");
     auto vc = std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker());
     checker_ = vc ? &vc->checker() : nullptr;
+    genericVehicle_ = genericVehicle();
+    space_ = std::dynamic_pointer_cast<GridSE2StateSpace>(si_->getStateSpace());
+    if (!space_) space_ = ownGridSpace();  // any other SE(2) space: a lattice from the parameters
     width_ = space_->width();
     height_ = space_->height();
     straightStep_ = space_->cellSize();
@@ -70,13 +76,15 @@ void GridPlanner::setup()
     if (!scratchB_) scratchB_ = si_->allocState();
     if (usesCarLattice())
     {
-        if (!checker_)
-            throw ompl::Exception(getName(), "the car lattice needs gridcar's footprint validity checker (see gridcar::makeGridSetup)");
         const CarLatticeConfig cfg = carLatticeConfig();
         const CarLatticeConfig *old = car_ ? &car_->lattice().config() : nullptr;
         if (!old || old->cell != cfg.cell || old->headings != cfg.headings || old->turnRadius != cfg.turnRadius ||
             old->spacing != cfg.spacing || old->reach != cfg.reach)
-            car_ = std::make_unique<CarLatticeSearch>(*checker_, std::make_shared<const CarLattice>(cfg));
+        {
+            auto lattice = std::make_shared<const CarLattice>(cfg);
+            car_ = checker_ ? std::make_unique<CarLatticeSearch>(*checker_, lattice)
+                            : std::make_unique<CarLatticeSearch>(std::make_shared<SpaceCollision>(si_), lattice);
+        }
         return;  // no per-cell move cache or dense search arrays on the car lattice
     }
     car_.reset();
@@ -102,8 +110,8 @@ bool GridPlanner::poseValid(double x, double y, double yaw) const
     if (checker_) return checker_->isValid(x, y, yaw);
     auto *s = scratchA_->as<ompl::base::SE2StateSpace::StateType>();
     s->setXY(x, y);
-    s->setYaw(yaw);
-    return si_->isValid(scratchA_);
+    s->setYaw(wrapYaw(yaw));
+    return si_->satisfiesBounds(scratchA_) && si_->isValid(scratchA_);
 }
 
 bool GridPlanner::checkMoveUncached(int col, int row, int d) const
@@ -122,7 +130,7 @@ bool GridPlanner::checkMoveUncached(int col, int row, int d) const
                  !poseValid(space_->cellCenterX(col), space_->cellCenterY(nr), Moves::yaw(d)))
             return false;
     }
-    const double yaw = Moves::yaw(d);
+    const double yaw = wrapYaw(Moves::yaw(d));
     const Pose2 a{space_->cellCenterX(col), space_->cellCenterY(row), yaw};
     const Pose2 b{space_->cellCenterX(nc), space_->cellCenterY(nr), yaw};
     if (checker_)

@@ -19,7 +19,6 @@ namespace gridcar
 {
 void GridPlanner::declareCarLatticeParams()
 {
-    declareParam<double>("lattice_cell", this, &GridPlanner::setLatticeCell, &GridPlanner::latticeCell, "0.:0.05:5.");
     declareParam<int>("headings", this, &GridPlanner::setLatticeHeadings, &GridPlanner::latticeHeadings, "8,16");
     declareParam<double>("heuristic_weight", this, &GridPlanner::setHeuristicWeight, &GridPlanner::heuristicWeight,
                          "1.:0.05:3.");
@@ -52,23 +51,28 @@ void GridPlanner::setLatticeHeadings(int h)
 
 CarLatticeConfig GridPlanner::carLatticeConfig() const
 {
-    if (!checker_) throw ompl::Exception(getName(), "the car lattice needs gridcar's footprint checker");
-    const VehicleParams &v = checker_->vehicle();
-    const double res = checker_->grid().resolution();
-    const double rmin = std::isfinite(v.minTurningRadius()) ? v.minTurningRadius() : 0.0;
+    const double rmin = turningRadius();
     CarLatticeConfig cfg;
-    if (latticeCell_ > 0)
-        cfg.cell = latticeCell_;
+    cfg.headings = latticeHeadings_;
+    if (checker_)
+    {
+        const VehicleParams &v = checker_->vehicle();
+        const double res = checker_->grid().resolution();
+        const double want = std::min(v.isPoint() ? 4 * res : v.width, rmin > 0 ? rmin : 4 * res) / 4;
+        cfg.cell = latticeCell_ > 0 ? latticeCell_ : res * std::max(1.0, std::round(want / res));
+        cfg.spacing = std::min(res, 0.1);
+        cfg.reach = checker_->reach();
+    }
     else
     {
-        const double want = std::min(v.isPoint() ? 4 * res : v.width, rmin > 0 ? rmin : 4 * res) / 4;
-        cfg.cell = res * std::max(1.0, std::round(want / res));
+        // any other validity checker: poses no farther apart than 0.1 m or OMPL's longest
+        // valid segment, whichever is shorter (the checker sees poses only)
+        cfg.cell = latticeCell_ > 0 ? latticeCell_ : rmin / 4;
+        cfg.spacing = std::min({0.1, cfg.cell / 2, si_->getStateSpace()->getLongestValidSegmentLength()});
+        cfg.reach = 0.0;
     }
-    cfg.headings = latticeHeadings_;
     // arcs 1 % wider than R_min: sampled curves then stay within K_max by a clear margin
     cfg.turnRadius = rmin > 0 ? 1.01 * rmin : cfg.cell;
-    cfg.spacing = std::min(res, 0.1);
-    cfg.reach = checker_->reach();
     return cfg;
 }
 
@@ -89,7 +93,7 @@ bool GridPlanner::carGoal(CarLatticeQuery &q, ompl::base::PlannerStatus &bad)
             setPose(scratchB_, p);
             return pg->isSatisfied(scratchB_);
         };
-        const bool ok = pg->freeHeading() ? checker_->fitsAtSomeHeading(pg->x(), pg->y(), 72) : checker_->isValid(q.goal);
+        const bool ok = pg->freeHeading() ? fitsAtSomeHeading(q.goal.x, q.goal.y) : poseValid(q.goal.x, q.goal.y, q.goal.yaw);
         return ok || invalid("the vehicle fits at no allowed heading at the goal position");
     }
     if (const auto *gs = dynamic_cast<const ompl::base::GoalState *>(goal))
@@ -97,7 +101,7 @@ bool GridPlanner::carGoal(CarLatticeQuery &q, ompl::base::PlannerStatus &bad)
         q.goal = toPose(gs->getState());
         q.goalYawTolerance = matchGoalHeading_ ? 0.0 : -1.0;
         if (!si_->satisfiesBounds(gs->getState())) return invalid("goal state is off the map");
-        const bool ok = matchGoalHeading_ ? checker_->isValid(q.goal) : checker_->fitsAtSomeHeading(q.goal.x, q.goal.y, 72);
+        const bool ok = matchGoalHeading_ ? poseValid(q.goal.x, q.goal.y, q.goal.yaw) : fitsAtSomeHeading(q.goal.x, q.goal.y);
         return ok || invalid(matchGoalHeading_ ? "goal state is in collision" : "the vehicle fits at no heading at the goal");
     }
     const auto *gsr = dynamic_cast<const ompl::base::GoalSampleableRegion *>(goal);

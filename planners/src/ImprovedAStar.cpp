@@ -3,6 +3,8 @@
 #include "gridcar/planners/SmoothedPlanner.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
+#include <ompl/util/Console.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -60,12 +62,19 @@ void ImprovedAStar::setDelta(double d)
 void ImprovedAStar::setObstacleCost(const std::string &c) { voronoi_ = oneOf(c, {"inverse", "voronoi"}, "obstacle_cost") == "voronoi"; }
 void ImprovedAStar::setContour(const std::string &c) { points_ = oneOf(c, {"fcl", "points"}, "contour") == "points"; }
 
+ImprovedAStar::~ImprovedAStar()
+{
+    if (obstacleScratch_) si_->freeState(obstacleScratch_);
+}
+
 void ImprovedAStar::setup()
 {
     GridPlanner::setup();
-    if (!checker_)
-        throw ompl::Exception(getName(), "needs gridcar's footprint validity checker (see gridcar::makeGridSetup)");
-    const VehicleParams &v = checker_->vehicle();
+    if (!obstacleScratch_) obstacleScratch_ = si_->allocState();
+    if (!checker_ && (voronoi_ || points_))
+        throw ompl::Exception(getName(), std::string(voronoi_ ? "obstacle_cost=voronoi" : "contour=points") +
+                                             " needs gridcar's footprint validity checker (the map's distance field)");
+    const VehicleParams &v = vehicle();
     const double kmax = v.maxCurvature();
     const double half = M_PI / 8;  // half of a 45-degree turn
     const double lturn = std::isfinite(kmax) ? 2 * std::sin(half) / (kmax * std::cos(half) * std::cos(half)) : 0.0;
@@ -112,6 +121,7 @@ void ImprovedAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
 
 double ImprovedAStar::obstacleCostAt(int col, int row) const
 {
+    if (!checker_) return obstacleCostAtPose({space_->cellCenterX(col), space_->cellCenterY(row), 0.0});
     const DistanceField &f = checker_->field();
     if (voronoi_) return delta_ * f.voronoiField(space_->cellCenterX(col), space_->cellCenterY(row));
     const double d = f.cellDistance(col, row);
@@ -245,15 +255,13 @@ double obstacleCostAtPoint(const DistanceField &f, const OccupancyGrid &g, doubl
 class ObstacleCostModel : public LatticeCostModel
 {
 public:
-    ObstacleCostModel(const FootprintChecker &c, double delta, bool voronoi) : c_(c), delta_(delta), voronoi_(voronoi) {}
-    double o(const Pose2 &p) const { return obstacleCostAtPoint(c_.field(), c_.grid(), delta_, voronoi_, p); }
+    explicit ObstacleCostModel(const ImprovedAStar &p) : p_(p) {}
+    double o(const Pose2 &p) const { return p_.obstacleCostAtPose(p); }
     double nodeWeight(const Pose2 &p) const override { return 1.0 + o(p); }
     bool weighted() const override { return true; }
 
 private:
-    const FootprintChecker &c_;
-    double delta_;
-    bool voronoi_;
+    const ImprovedAStar &p_;
 };
 
 /// Integral mode on the car lattice: length x (1 + o), o averaged over the primitive's samples.
@@ -280,16 +288,34 @@ public:
 };
 }  // namespace
 
+double ImprovedAStar::obstacleCostAtPose(const Pose2 &p) const
+{
+    if (checker_) return obstacleCostAtPoint(checker_->field(), checker_->grid(), delta_, voronoi_, p);
+    // any other validity checker: its clearance() when it computes one, else no obstacle cost
+    const auto &vc = si_->getStateValidityChecker();
+    if (!vc || vc->getSpecs().clearanceComputationType == ompl::base::StateValidityCheckerSpecs::NONE) return 0.0;
+    setPose(obstacleScratch_, p);
+    const double d = vc->clearance(obstacleScratch_);
+    return d > 0 ? delta_ / d : std::numeric_limits<double>::infinity();
+}
+
 std::unique_ptr<LatticeCostModel> ImprovedAStar::carCost() const
 {
-    if (paperMode_) return std::make_unique<PaperCost>(*checker_, delta_, voronoi_);
-    return std::make_unique<IntegralCost>(*checker_, delta_, voronoi_);
+    if (paperMode_) return std::make_unique<PaperCost>(*this);
+    return std::make_unique<IntegralCost>(*this);
 }
 
 bool ImprovedAStar::postProcess(ompl::geometric::PathGeometric &path)
 {
     if (!smooth_ || path.getStateCount() < 3)
     {
+        latticePath_ = toPoses(path);
+        return false;
+    }
+    if (!checker_)
+    {
+        // paper I's smoothing checks the footprint on the map: not available here
+        OMPL_WARN("%s: smooth=1 needs gridcar's footprint validity checker; the path is not smoothed", getName().c_str());
         latticePath_ = toPoses(path);
         return false;
     }

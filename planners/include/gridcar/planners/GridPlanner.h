@@ -80,9 +80,22 @@ public:
     /// Seconds spent in the search loop itself by the last solve() (no path building).
     double lastSearchSeconds() const { return lastSearchSeconds_; }
 
+    /// Turning radius of the car lattice's arcs (`turning_radius`, m); 0 = automatic: the
+    /// vehicle's R_min with gridcar's checker, the space's radius on OMPL's Dubins or
+    /// Reeds-Shepp space, else the default car's (VehicleParams{}: 3.86 m).
+    double turningRadiusParam() const { return turningRadius_; }
+    void setTurningRadius(double r);
+    /// The turning radius in use (see turningRadiusParam()).
+    double turningRadius() const;
+    /// The vehicle whose limits the planner uses: gridcar's checker's, or on any other
+    /// validity checker the default car with its steering set to turningRadius().
+    const VehicleParams &vehicle() const { return checker_ ? checker_->vehicle() : genericVehicle_; }
+
     // The car lattice (search/CarLattice.h), for the planners that search it.
-    /// Lattice cell size in metres; 0 = automatic (lattice_cell): the largest multiple of the
-    /// map resolution nearest to min(width, R_min) / 4, at least one map cell.
+    /// Lattice cell size in metres; 0 = automatic (lattice_cell). Car lattice: the multiple of
+    /// the map resolution nearest to min(width, R_min) / 4, at least one map cell (R_min / 4
+    /// without gridcar's checker). Grid lattice: the map's cells on gridcar's space; on any
+    /// other SE(2) space cells of this size over the space's bounds (automatic: R_min / 4).
     double latticeCell() const { return latticeCell_; }
     void setLatticeCell(double m);
     /// Heading count of the car lattice: 8 or 16 (`headings`).
@@ -173,6 +186,14 @@ private:
     bool checkMoveUncached(int col, int row, int d) const;
     bool fillMoveCache(int col, int row, int d) const;
     bool poseValid(double x, double y, double yaw) const;
+    bool fitsAtSomeHeading(double x, double y) const;
+    /// On an SE(2) space that is not gridcar's: the lattice geometry from the bounds and
+    /// lattice_cell (GridPlannerSpace.cpp).
+    std::shared_ptr<GridSE2StateSpace> ownGridSpace();
+    VehicleParams genericVehicle() const;
+    std::shared_ptr<GridSE2StateSpace> ownSpace_;
+    VehicleParams genericVehicle_;
+    double turningRadius_{0.0};
 
     bool allowCornerCutting_{false};
     bool matchGoalHeading_{false};

@@ -72,6 +72,7 @@ class ImprovedAStar : public GridPlanner, public SmoothingReport
 {
 public:
     explicit ImprovedAStar(const ompl::base::SpaceInformationPtr &si);
+    ~ImprovedAStar() override;
 
     void setup() override;
     void clear() override;
@@ -99,6 +100,9 @@ public:
     int stepsBeforeTurn(int diagonal) const { return need_[diagonal ? 1 : 0]; }
     /// o(n) at a cell (after setup()).
     double obstacleCostAt(int col, int row) const;
+    /// o(n) at a world pose: delta / d_O (or delta rho_V) from the map's distance field; with
+    /// another validity checker delta / its clearance() if it computes one, else 0.
+    double obstacleCostAtPose(const Pose2 &p) const;
     /// Heuristic value from a cell to the goal cell, metres (after setup(), in the current mode).
     double heuristicAt(int col, int row, int goalCol, int goalRow) const;
     /// Post-processing report of the last solve() (empty when smooth = false).
@@ -130,6 +134,7 @@ protected:
 
 private:
     friend struct ImprovedExpander;
+    mutable ompl::base::State *obstacleScratch_{nullptr};
     bool paperMode_{true};
     bool car_{true};
     std::string heuristic_{"auto"};

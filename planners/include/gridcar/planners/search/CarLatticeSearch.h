@@ -4,8 +4,8 @@
 /// checks of every primitive, the obstacle-aware heuristic, an analytic Dubins shot to the exact
 /// goal, and a pluggable cost model (improved A*'s and corner A*'s costs on the same successors).
 
-#include "gridcar/collision/FootprintChecker.h"
 #include "gridcar/planners/search/AStar.h"
+#include "gridcar/planners/search/CarCollision.h"
 #include "gridcar/planners/search/CarLattice.h"
 #include "gridcar/planners/search/ObstacleHeuristic.h"
 
@@ -86,7 +86,8 @@ struct CarLatticeResult
  * the start position and its x axis along the start yaw (the start is always a node, whatever
  * its pose); collision is checked against the map's own cells at every sampled pose with the
  * rectangle grown by CarLattice::margin() (so the swept motion is certified), mostly by the
- * distance field's disc cover (FootprintChecker).
+ * distance field's disc cover (FootprintChecker); or, on a SpaceCollision, by the OMPL
+ * application's own validity checker at every sampled pose.
  *
  * Heuristic: max(Euclidean distance x the cost model's least cost per metre, ObstacleHeuristic
  * distance (edges weighted by the cost model's nodeWeight()) / ratio - seed radius), where ratio >= 1 is the largest ratio of the 2D graph's
@@ -103,7 +104,10 @@ struct CarLatticeResult
 class CarLatticeSearch
 {
 public:
+    /// On gridcar's footprint checker (its fast paths).
     CarLatticeSearch(const FootprintChecker &checker, std::shared_ptr<const CarLattice> lattice);
+    /// On any collision source (e.g. SpaceCollision: an OMPL application's validity checker).
+    CarLatticeSearch(std::shared_ptr<CarCollision> collision, std::shared_ptr<const CarLattice> lattice);
     ~CarLatticeSearch();
 
     const CarLattice &lattice() const { return *lattice_; }
@@ -142,7 +146,7 @@ private:
     std::vector<Pose2> buildPath(std::uint32_t end) const;
     double measureRatio() const;
 
-    const FootprintChecker &checker_;
+    std::shared_ptr<CarCollision> col_;
     std::shared_ptr<const CarLattice> lattice_;
     double ratio_{1.0};
     // the last run's frame, states and heuristic
@@ -151,8 +155,6 @@ private:
     CarLatticeQuery query_;
     std::unique_ptr<ObstacleHeuristic> h2d_;
     bool use2d_{true};
-    /// Inscribed-disc offsets per lattice heading (in this query's frame) and its reverse.
-    std::vector<std::vector<std::array<double, 2>>> discs_, discsBack_;  ///< false when the 2D graph cannot join start and goal (Euclid alone then)
     double seedRadius_{0};
     std::unordered_map<std::uint64_t, std::uint32_t> ids_;
     std::vector<std::uint64_t> keys_;

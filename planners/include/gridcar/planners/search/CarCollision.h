@@ -1,0 +1,95 @@
+#pragma once
+/// @file CarCollision.h
+/// @brief What the car lattice search asks about collisions, answered either by gridcar's
+/// FootprintChecker (distance-field fast paths, grown rectangle) or by any OMPL
+/// SpaceInformation (its own validity checker, pose by pose).
+
+#include "gridcar/collision/FootprintChecker.h"
+#include "gridcar/core/Pose2.h"
+
+#include <ompl/base/SpaceInformation.h>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace gridcar
+{
+/// Collision queries of CarLatticeSearch.
+class CarCollision
+{
+public:
+    virtual ~CarCollision() = default;
+    /// World rectangle the lattice may use: x0, y0, x1, y1.
+    virtual std::array<double, 4> extent() const = 0;
+    /// The car at pose @p p is valid (in bounds, free).
+    virtual bool poseFree(const Pose2 &p) const = 0;
+    /// The car fits at one of @p steps equally spaced headings at (x, y).
+    bool fitsAtSomeHeading(double x, double y, int steps) const;
+    /// The motion from @p from through poses 1..n (poseAt(i)) is free; @p margin (m) is how
+    /// far a body point may move between two poses (a checker that can grow the rectangle by
+    /// it certifies the sweep; one that cannot checks the poses alone).
+    virtual bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double margin) const = 0;
+    /// How far the farthest body point is from the reference point (m): sample counts of
+    /// curves scale by 1 + reach / R so that body points move at most the lattice spacing.
+    virtual double reach() const = 0;
+    /// Once per query: the world yaws of the lattice headings (the 2D heuristic's axes).
+    virtual void setHeadings(const std::vector<double> &yaws) = 0;
+    /// False only if the car cannot stand at (x, y) lined up with heading @p h or its reverse.
+    virtual bool mayStandOnAxis(double x, double y, int h) const = 0;
+    /// False only if the car cannot stand at (x, y) at any of the headings.
+    virtual bool mayStandAt(double x, double y) const = 0;
+    /// True if the answers are relaxations (the heuristic is then a lower bound).
+    virtual bool relaxed() const = 0;
+};
+
+/// gridcar's own checker: the distance field's disc cover and inscribed discs, the rectangle
+/// grown by the margin, so a free curve is a free sweep. The heuristic tests are relaxations.
+class FootprintCollision : public CarCollision
+{
+public:
+    explicit FootprintCollision(const FootprintChecker &checker) : c_(checker) {}
+    std::array<double, 4> extent() const override;
+    bool poseFree(const Pose2 &p) const override { return c_.isValid(p); }
+    bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double margin) const override;
+    double reach() const override { return c_.reach(); }
+    void setHeadings(const std::vector<double> &yaws) override;
+    bool mayStandOnAxis(double x, double y, int h) const override;
+    bool mayStandAt(double x, double y) const override;
+    bool relaxed() const override { return true; }
+
+private:
+    const FootprintChecker &c_;
+    /// Inscribed-disc offsets per heading and its reverse.
+    std::vector<std::vector<std::array<double, 2>>> discs_, discsBack_;
+};
+
+/**
+ * Any OMPL SpaceInformation over an SE(2)-derived space: validity is `si->isValid()` (bounds
+ * included) at every pose, so a curve is as safe as the checker at the lattice's spacing. The
+ * heuristic's axis test asks the checker at the node lined up with the step (either way): not a
+ * proven relaxation for an unknown body, so the path is near-optimal rather than bounded.
+ */
+class SpaceCollision : public CarCollision
+{
+public:
+    explicit SpaceCollision(ompl::base::SpaceInformationPtr si);
+    ~SpaceCollision() override;
+    SpaceCollision(const SpaceCollision &) = delete;
+    SpaceCollision &operator=(const SpaceCollision &) = delete;
+    std::array<double, 4> extent() const override;
+    bool poseFree(const Pose2 &p) const override;
+    bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double margin) const override;
+    double reach() const override { return 0.0; }
+    void setHeadings(const std::vector<double> &yaws) override { yaws_ = yaws; }
+    bool mayStandOnAxis(double x, double y, int h) const override;
+    bool mayStandAt(double, double) const override { return true; }
+    bool relaxed() const override { return false; }
+
+private:
+    ompl::base::SpaceInformationPtr si_;
+    ompl::base::State *scratch_;
+    std::vector<double> yaws_;
+};
+
+}  // namespace gridcar

@@ -1,0 +1,95 @@
+/// @file GridPlannerSpace.cpp
+/// @brief GridPlanner on an SE(2) space that is not gridcar's (plain SE2, OMPL's Dubins or
+/// Reeds-Shepp): the lattice geometry from the space's bounds and the planner's parameters,
+/// the turning radius from the space, and the default car's dynamics.
+#include "gridcar/planners/GridPlanner.h"
+
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace gridcar
+{
+namespace
+{
+/// The radius of OMPL's Dubins / Reeds-Shepp space (kept protected in OMPL 1.5.2): the metric
+/// is the radius times the unit-radius path length, so their ratio on any curve is the radius.
+double spaceTurningRadius(const ompl::base::StateSpacePtr &space)
+{
+    ompl::base::ScopedState<ompl::base::SE2StateSpace> a(space), b(space);
+    a->setXY(0.0, 0.0);
+    a->setYaw(0.0);
+    b->setXY(10.0, 3.0);
+    b->setYaw(1.0);
+    if (auto *d = dynamic_cast<const ompl::base::DubinsStateSpace *>(space.get()))
+        return d->distance(a.get(), b.get()) / d->dubins(a.get(), b.get()).length();
+    if (auto *r = dynamic_cast<const ompl::base::ReedsSheppStateSpace *>(space.get()))
+        return r->distance(a.get(), b.get()) / r->reedsShepp(a.get(), b.get()).length();
+    return 0.0;
+}
+}  // namespace
+
+void GridPlanner::setTurningRadius(double r)
+{
+    if (!std::isfinite(r) || r < 0.0 || r > 1e4)
+        throw std::invalid_argument(getName() + ": turning_radius must be 0 (automatic) or a length in (0, 10000] m");
+    turningRadius_ = r;
+    setup_ = false;
+}
+
+double GridPlanner::turningRadius() const
+{
+    // never tighter than gridcar's vehicle can drive
+    if (checker_) return std::max(turningRadius_, checker_->vehicle().minTurningRadius());
+    if (turningRadius_ > 0) return turningRadius_;
+    const double r = spaceTurningRadius(si_->getStateSpace());
+    return r > 0 ? r : VehicleParams{}.minTurningRadius();
+}
+
+VehicleParams GridPlanner::genericVehicle() const
+{
+    VehicleParams v;  // the default car, steering to the turning radius in use
+    v.name = "default car (" + getName() + " without gridcar's checker)";
+    const double r = turningRadius();
+    v.maxSteerDeg = std::atan(v.wheelbase / r) * 180.0 / M_PI;
+    return v;
+}
+
+bool GridPlanner::fitsAtSomeHeading(double x, double y) const
+{
+    if (checker_) return checker_->fitsAtSomeHeading(x, y, 72);
+    for (int k = 0; k < 72; ++k)
+        if (poseValid(x, y, wrapYaw(k * 2.0 * M_PI / 72))) return true;
+    return false;
+}
+
+std::shared_ptr<GridSE2StateSpace> GridPlanner::ownGridSpace()
+{
+    const auto &b = si_->getStateSpace()->as<ompl::base::SE2StateSpace>()->getBounds();
+    const double sx = b.high[0] - b.low[0], sy = b.high[1] - b.low[1];
+    if (!(sx > 0 && sy > 0) || !std::isfinite(sx) || !std::isfinite(sy))
+        throw ompl::Exception(getName(), "the SE(2) space needs finite, non-empty x and y bounds");
+    double cell = latticeCell_ > 0 ? latticeCell_ : turningRadius() / 4;
+    constexpr double kMaxCells = double(1 << 24);
+    if (usesCarLattice())
+        cell = std::max(cell, std::sqrt(sx * sy / kMaxCells));  // geometry only: the car lattice has its own nodes
+    const double w = std::ceil(sx / cell - 1e-9), h = std::ceil(sy / cell - 1e-9);
+    if (w * h > kMaxCells)
+        throw ompl::Exception(getName(), "lattice_cell " + std::to_string(cell) + " m over the space's bounds gives " +
+                                             std::to_string(long(w)) + " x " + std::to_string(long(h)) +
+                                             " cells, more than 2^24: raise lattice_cell");
+    if (ownSpace_ && ownSpace_->width() == int(w) && ownSpace_->height() == int(h) && ownSpace_->cellSize() == cell &&
+        ownSpace_->originX() == b.low[0] && ownSpace_->originY() == b.low[1])
+        return ownSpace_;
+    OccupancyGrid g(int(w), int(h), cell);
+    g.setOrigin(b.low[0], b.low[1]);
+    ownSpace_ = std::make_shared<GridSE2StateSpace>(g, 8);
+    return ownSpace_;
+}
+
+}  // namespace gridcar
