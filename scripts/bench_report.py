@@ -4,6 +4,8 @@
 ompl_benchmark_statistics built from the OMPL .log files. Run by `gridcar bench`."""
 import argparse
 import json
+import math
+import re
 import sys
 import os
 import sqlite3
@@ -17,13 +19,72 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 METRICS = [  # (column, header, format)
     ("time", "time s", "{:.3f}"),
+    ("time_to_first_solution", "first solution s", "{:.3f}"),
     ("path_length", "length m", "{:.1f}"),
     ("driving_time", "driving time s", "{:.1f}"),
     ("sim_driving_time", "simulated s", "{:.1f}"),
     ("min_clearance", "clearance m", "{:.2f}"),
     ("turns", "turns", "{:.0f}"),
     ("max_curvature", "max curvature 1/m", "{:.2f}"),
+    ("cusps", "cusps", "{:.0f}"),
 ]
+LOG_AXIS = ("time", "time_to_first_solution")  # answers take 5 ms, timeouts 5 s
+
+
+def query_of(ename):
+    """The query an experiment belongs to: its name without the time-limit suffix -tTs."""
+    m = re.match(r"^(.*-q\d+)(-t[0-9.e+]+s)?$", ename)
+    return m.group(1) if m else ename
+
+
+def outline(ax, x, y, yaw, veh, color):
+    """The vehicle rectangle at a pose (reference point: rear axle)."""
+    L, W, r = veh["length"], veh["width"], veh["rear_overhang"]
+    c, s = math.cos(yaw), math.sin(yaw)
+    pts = [(-r, -W / 2), (L - r, -W / 2), (L - r, W / 2), (-r, W / 2), (-r, -W / 2)]
+    ax.plot([x + c * u - s * v for u, v in pts], [y + s * u + c * v for u, v in pts], color=color, lw=0.6, alpha=0.8)
+
+
+def summary(cur, exps, cols):
+    """One table: per planner and query, the best driving time of a drivable exact run, the
+    solve time of that run and the time limit it ran under; then the runs that succeeded."""
+    if "driving_time" not in cols:
+        return []
+    drv = "drivable" if "drivable" in cols else "1"
+    best, ok, queries = {}, {}, []
+    for eid, ename, tlimit, _ in exps:
+        q = query_of(ename)
+        if q not in queries:
+            queries.append(q)
+        for pname, dt, t, solved, approx, dr in cur.execute(
+                "SELECT p.name, r.driving_time, r.time, r.solved, r.approximate_solution, {} FROM runs r "
+                "JOIN plannerConfigs p ON r.plannerid = p.id WHERE r.experimentid = ?".format(
+                    "r." + drv if drv != "1" else "1"), (eid,)):
+            label = pname.replace("geometric_", "")
+            good = solved and not approx and dr and dt is not None
+            n = ok.setdefault(label, [0, 0])
+            n[1] += 1
+            if good:
+                n[0] += 1
+                key = (label, q)
+                if key not in best or dt < best[key][0]:
+                    best[key] = (dt, t, tlimit)
+    lines = ["## Summary: best driving time per planner and query", "",
+             "Best simulated-profile driving time (s) of a drivable exact path over all runs and time limits, "
+             "with the solve time of that run and its time limit; drivable = exact solutions that pass the "
+             "independent drivable check / runs.", ""]
+    hdr = ["planner"] + queries + ["drivable"]
+    lines.append("| " + " | ".join(hdr) + " |")
+    lines.append("|" + "---|" * len(hdr))
+    for label in ok:
+        row = [label]
+        for q in queries:
+            b = best.get((label, q))
+            row.append("-" if b is None else "{:.1f} s in {:.3f} s (limit {:g} s)".format(*b))
+        row.append("{}/{}".format(*ok[label]))
+        lines.append("| " + " | ".join(row) + " |")
+    lines.append("")
+    return lines
 
 
 def quartiles(values):
@@ -54,12 +115,13 @@ def main():
                     help="paths JSON written by gridcar bench (several: the shards' files, merged)")
     ap.add_argument("--out", required=True)
     ap.add_argument("--title", default="benchmark")
+    ap.add_argument("--note", default="", help="a paragraph put under the title (e.g. a link to another report)")
     a = ap.parse_args()
 
     con = sqlite3.connect(a.db)
     cur = con.cursor()
     cols = {r[1] for r in cur.execute("PRAGMA table_info(runs)")}
-    paths, maps = {}, {}
+    paths, maps, vehicle = {}, {}, None
     for name in a.paths:
         try:
             with open(name) as f:
@@ -67,10 +129,16 @@ def main():
         except (OSError, ValueError) as e:
             sys.exit("bench_report.py: {}: {}".format(name, e))
         maps.update(part.pop("_maps", {}))
+        v = part.pop("_vehicle", None)
+        if v:
+            vehicle = v
         paths.update(part)
 
     exps = cur.execute("SELECT id, name, timelimit, runcount FROM experiments ORDER BY id").fetchall()
     lines = ["# Benchmark report: {}".format(a.title), ""]
+    if a.note:
+        lines += [a.note, ""]
+    lines += summary(cur, exps, cols)
     lines.append("Built from `{}` (OMPL benchmark database; open it with `ompl_benchmark_statistics` "
                  "or Planner Arena). Cells: median (lower quartile - upper quartile) over the runs "
                  "that found an exact solution; success = exact solutions / runs. Length: x-y length of the "
@@ -109,13 +177,16 @@ def main():
 
         # box plots
         labels = list(series.keys())
-        boxed = [m for m in METRICS if m[0] in ("time", "path_length", "driving_time", "sim_driving_time", "min_clearance")]
+        boxed = [m for m in METRICS if m[0] in ("time", "time_to_first_solution", "driving_time", "min_clearance")
+                 and m[0] in cols]
         fig, axes = plt.subplots(1, len(boxed), figsize=(4.5 * len(boxed), 0.35 * len(labels) + 2.5))
         for ax, (c, h, _) in zip(axes, boxed):
             data = [series[l].get(c, []) or [float("nan")] for l in labels]
             ax.boxplot(data, vert=False, labels=labels if ax is axes[0] else [""] * len(labels))
-            ax.set_title(h)
-            ax.grid(True, axis="x", alpha=0.3)
+            ax.set_title(h + (" (log)" if c in LOG_AXIS else ""))
+            if c in LOG_AXIS:
+                ax.set_xscale("log")
+            ax.grid(True, axis="x", alpha=0.3, which="both")
         fig.suptitle(ename)
         fig.tight_layout()
         box = "{}-box.png".format(ename)
@@ -135,6 +206,14 @@ def main():
                 if not pts:
                     continue
                 ax.plot([p[0] for p in pts], [p[1] for p in pts], color=cmap(i % 20), lw=1.4, label=l)
+                if vehicle and len(pts[0]) > 2:  # the car's outline every few metres
+                    along, last = 0.0, None
+                    for k, p in enumerate(pts):
+                        if k:
+                            along += math.hypot(p[0] - pts[k - 1][0], p[1] - pts[k - 1][1])
+                        if last is None or along - last >= 8.0 or k == len(pts) - 1:
+                            outline(ax, p[0], p[1], p[2], vehicle, cmap(i % 20))
+                            last = along
             ax.plot(*m["start"], "ko", ms=7)
             ax.plot(*m["goal"], "m*", ms=12)
             ax.set_xlim(x0, x1)
@@ -142,7 +221,8 @@ def main():
             ax.set_xlabel("x (m)")
             ax.set_ylabel("y (m)")
             ax.legend(fontsize=7, loc="best")
-            ax.set_title("{}: first exact path of each planner".format(ename))
+            ax.set_title("{}: first exact path of each planner{}".format(
+                ename, " (car outline every 8 m)" if vehicle else ""))
             fig.tight_layout()
             pp = "{}-paths.png".format(ename)
             fig.savefig(os.path.join(a.out, pp), dpi=90)

@@ -72,7 +72,16 @@ BenchWorld loadWorld(const Problem &p)
         if (!isPlannerName(s.name)) bad(p, "unknown planner '" + s.name + "'");
     std::fprintf(stderr, "[bench] %s: distance field and footprint checker for %d x %d cells...\n", p.name.c_str(),
                  w.grid->width(), w.grid->height());
-    w.setup = makeGridSetup(w.grid, w.vehicle);
+    SetupOptions so;
+    so.space = p.space;
+    try
+    {
+        w.setup = makeGridSetup(w.grid, w.vehicle, so);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        bad(p, e.what());
+    }
     try
     {
         w.setup.ss->setOptimizationObjective(
@@ -90,15 +99,21 @@ BenchWorld loadWorld(const Problem &p)
 void addRunProperties(const BenchWorld &w, const ompl::base::Planner &planner, const std::vector<Pose2> &poses,
                       ompl::tools::Benchmark::RunProperties &run)
 {
-    const PathMetrics m = computePathMetrics(poses, w.setup.checker.get());
+    const bool rev = w.setup.reversing();
+    const PathMetrics m = computePathMetrics(poses, w.setup.checker.get(), TurnParams(), rev);
     run["path length REAL"] = std::to_string(m.length);  // OMPL's solution length adds yaw distance
     run["turns INTEGER"] = std::to_string(m.turns);
     run["max turn deg REAL"] = std::to_string(m.maxTurnDeg);
     run["max curvature REAL"] = std::to_string(std::isfinite(m.maxCurvature) ? m.maxCurvature : 1e9);
     run["min clearance REAL"] = std::to_string(m.minClearance);
     run["path distance REAL"] = std::to_string(m.minPathDistance);
-    run["driving time REAL"] = std::to_string(drivingTime(poses, w.vehicle));
-    run["drivable BOOLEAN"] = checkDrivable(poses, *w.setup.checker).drivable ? "1" : "0";
+    run["cusps INTEGER"] = std::to_string(m.cusps);
+    DrivingTimeParams tp;
+    tp.reversing = rev;  // a stop at each cusp
+    run["driving time REAL"] = std::to_string(drivingTime(poses, w.vehicle, tp));
+    DrivabilityOptions dopt;
+    dopt.reversing = rev;
+    run["drivable BOOLEAN"] = checkDrivable(poses, *w.setup.checker, dopt).drivable ? "1" : "0";
     // the path driven by paper C's potential-field follower in the kinematic simulation
     FollowerParams fp;
     fp.recordTrajectory = false;
@@ -150,7 +165,7 @@ struct BenchRun
 };
 
 /// Benchmarks query @p qi with this shard's planners and writes its .log and picture.
-void benchmarkQuery(BenchRun &run, std::size_t qi)
+void benchmarkQuery(BenchRun &run, std::size_t qi, double timeLimit, const std::string &limitTag)
 {
     const Problem &p = run.p;
     GridSetup &setup = run.w.setup;
@@ -166,13 +181,15 @@ void benchmarkQuery(BenchRun &run, std::size_t qi)
     if (!setup.checker->isValid(goal)) bad(p, q + ": the goal is off the map or in collision for " + run.w.vehicle.name);
     setup.ss->clear();
     setup.setStartAndGoal(start, goal);
-    const std::string expName = p.name + "-q" + std::to_string(qi + 1);
+    const std::string expName = p.name + "-q" + std::to_string(qi + 1) + limitTag;
     ompl::tools::Benchmark b(*setup.ss, expName);
     b.addExperimentParameter("query", "INTEGER", std::to_string(qi + 1));
     b.addExperimentParameter("start_x", "REAL", std::to_string(start.x));
     b.addExperimentParameter("start_y", "REAL", std::to_string(start.y));
     b.addExperimentParameter("goal_x", "REAL", std::to_string(goal.x));
     b.addExperimentParameter("goal_y", "REAL", std::to_string(goal.y));
+    b.addExperimentParameter("space", "VARCHAR(16)", spaceKindName(p.space));
+    b.addExperimentParameter("time_limit", "REAL", std::to_string(timeLimit));
     for (std::size_t k : run.mine[qi])
     {
         const PlannerSpec spec = p.planners[k];
@@ -191,7 +208,16 @@ void benchmarkQuery(BenchRun &run, std::size_t qi)
         });
     }
     std::map<std::string, unsigned> runOf;
+    Clock::time_point solveStart;
+    double firstSolution = -1;  // s after the run's start; -1: not reported by the planner
     b.setPreRunEvent([&](const ompl::base::PlannerPtr &pl) {
+        solveStart = Clock::now();
+        firstSolution = -1;
+        // anytime planners (RRT*, BIT*) report each better path: the first is the time to first solution
+        setup.ss->getProblemDefinition()->setIntermediateSolutionCallback(
+            [&](const ompl::base::Planner *, const std::vector<const ompl::base::State *> &, const ompl::base::Cost &) {
+                if (firstSolution < 0) firstSolution = std::chrono::duration<double>(Clock::now() - solveStart).count();
+            });
         const unsigned r = ++runOf[pl->getName()];
         if (r == 1) ++run.unitsStarted;
         const double el = std::chrono::duration<double>(Clock::now() - run.t0).count();
@@ -201,17 +227,25 @@ void benchmarkQuery(BenchRun &run, std::size_t qi)
     b.setPostRunEvent([&](const ompl::base::PlannerPtr &pl, ompl::tools::Benchmark::RunProperties &props) {
         const auto &pdef = setup.ss->getProblemDefinition();
         if (!pdef->hasSolution()) return;
-        const std::vector<Pose2> poses = toPoses(*pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>());
+        const double total = std::chrono::duration<double>(Clock::now() - solveStart).count();
+        const std::vector<Pose2> poses = solutionPoses(setup, *pl);
         addRunProperties(run.w, *pl, poses, props);
+        // planners that stop at their first solution (ours, RRTConnect, RRT) found it at the end
+        // of the run; PRM-style planners report none before the time limit
+        const bool anytime = pl->getSpecs().optimizingPaths;
+        if (firstSolution >= 0 && firstSolution <= total)
+            props["time to first solution REAL"] = std::to_string(firstSolution);
+        else if (!anytime)  // OMPL's own solve time when it has recorded it already
+            props["time to first solution REAL"] = props.count("time REAL") ? props["time REAL"] : std::to_string(total);
         const std::string key = expName + "|" + pl->getName();
         if (!run.pathsJson.contains(key) && !pdef->hasApproximateSolution())
         {
             nlohmann::json pts = nlohmann::json::array();
-            for (const Pose2 &pp : poses) pts.push_back({pp.x, pp.y});
+            for (const Pose2 &pp : poses) pts.push_back({pp.x, pp.y, pp.yaw});
             run.pathsJson[key] = pts;
         }
     });
-    ompl::tools::Benchmark::Request req(p.timeLimit, p.memoryMb, p.runs, 0.5, false, false, /*simplify=*/false);
+    ompl::tools::Benchmark::Request req(timeLimit, p.memoryMb, p.runs, 0.5, false, false, /*simplify=*/false);
     b.benchmark(req);
     const std::string log = (fs::path(run.o.outDir) / (expName + run.tag + ".log")).string();
     if (!b.saveResultsToFile(log.c_str())) throw std::runtime_error("cannot write " + log);
@@ -234,7 +268,7 @@ void writeReport(const Problem &p, const BenchOptions &o, const std::vector<std:
         throw std::runtime_error("ompl_benchmark_statistics failed (is Debian's ompl-demos installed? see " +
                                  (fs::path(o.outDir) / "ompl_benchmark_statistics.out").string() + ")");
     cmd = "/usr/bin/python3 '" + script + "' --db '" + db.string() + "' --paths '" + pathsFile.string() + "' --out '" +
-          o.outDir + "' --title '" + p.name + "'";
+          o.outDir + "' --title '" + p.name + "'" + (o.reportNote.empty() ? "" : " --note '" + o.reportNote + "'");
     std::fprintf(stderr, "[bench] %s: report and plots\n", p.name.c_str());
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("the report script failed: " + cmd);
     std::fprintf(stderr, "[bench] %s: done: %s/report.md\n", p.name.c_str(), o.outDir.c_str());
@@ -254,7 +288,12 @@ int runBench(const BenchOptions &o)
         std::fprintf(stderr, "[bench] %s: skipped: %s\n", o.problem.c_str(), skipWhy.c_str());
         return 0;
     }
-    if (o.timeLimit > 0) p.timeLimit = o.timeLimit;
+    if (o.reportNote.find('\'') != std::string::npos) throw InputError("--report-note must not contain a single quote");
+    if (o.timeLimit > 0)
+    {
+        p.timeLimit = o.timeLimit;
+        p.timeLimits.clear();  // --time-limit replaces the problem's list too
+    }
     if (o.runs > 0) p.runs = o.runs;
     const std::string script = o.reportScript.empty() ? defaultReportScript() : o.reportScript;
     if (!o.noDatabase && shardN == 1 && !fs::is_regular_file(script))  // fail before the runs, not after
@@ -276,8 +315,18 @@ int runBench(const BenchOptions &o)
                 run.mine[q].push_back(k);
                 ++run.total;
             }
+    const std::vector<double> limits = p.timeLimits.empty() ? std::vector<double>{p.timeLimit} : p.timeLimits;
     for (std::size_t qi = 0; qi < p.queries.size(); ++qi)
-        if (!run.mine[qi].empty()) benchmarkQuery(run, qi);
+        if (!run.mine[qi].empty())
+            for (double limit : limits)
+            {
+                char tag[32] = "";
+                if (p.timeLimits.size() > 0) std::snprintf(tag, sizeof tag, "-t%gs", limit);
+                benchmarkQuery(run, qi, limit, tag);
+            }
+    const VehicleParams &v = world.vehicle;
+    if (!v.isPoint())
+        run.pathsJson["_vehicle"] = {{"length", v.length}, {"width", v.width}, {"rear_overhang", v.rearOverhang}};
     const fs::path pathsFile = fs::path(o.outDir) / (p.name + run.tag + "-paths.json");
     std::ofstream(pathsFile) << run.pathsJson.dump() << "\n";
     const double el = std::chrono::duration<double>(Clock::now() - run.t0).count();

@@ -71,7 +71,26 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
         if (y["delta"]) p.delta = y["delta"].as<double>();
         if (y["unknown_free"]) p.unknownFree = y["unknown_free"].as<bool>();
         if (y["resample"]) p.resample = y["resample"].as<double>();
+        if (y["time_limit"] && y["time_limits"]) bad(p, "give either 'time_limit' or 'time_limits', not both");
         if (y["time_limit"]) p.timeLimit = y["time_limit"].as<double>();
+        if (y["time_limits"])
+        {
+            if (!y["time_limits"].IsSequence() || y["time_limits"].size() == 0)
+                bad(p, "'time_limits' must be a non-empty list of seconds, e.g. [1, 5, 10]");
+            for (const auto &t : y["time_limits"]) p.timeLimits.push_back(t.as<double>());
+            p.timeLimit = p.timeLimits.front();
+        }
+        if (y["space"])
+        {
+            try
+            {
+                p.space = parseSpaceKind(y["space"].as<std::string>());
+            }
+            catch (const std::invalid_argument &e)
+            {
+                bad(p, e.what());
+            }
+        }
         if (y["memory_limit_mb"]) p.memoryMb = y["memory_limit_mb"].as<double>();
         if (y["runs"]) p.runs = y["runs"].as<unsigned>();
         if (!y["queries"] || !y["queries"].IsSequence() || y["queries"].size() == 0)
@@ -103,6 +122,8 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
         bad(p, std::string("bad value (") + e.what() + ")");
     }
     if (!(p.timeLimit > 0) || !std::isfinite(p.timeLimit) || p.timeLimit > 86400) bad(p, "time_limit must be in (0, 86400] s");
+    for (double t : p.timeLimits)
+        if (!(t > 0) || !std::isfinite(t) || t > 86400) bad(p, "every time_limits entry must be in (0, 86400] s");
     if (p.runs == 0 || p.runs > 100000) bad(p, "runs must be in 1..100000");
     if (!(p.memoryMb > 0)) bad(p, "memory_limit_mb must be positive");
     if (p.resample < 0 || !std::isfinite(p.resample) || (p.resample > 0 && p.resample < 1e-3))

@@ -67,7 +67,7 @@ void GridPlanner::setup()
     checker_ = vc ? &vc->checker() : nullptr;
     genericVehicle_ = genericVehicle();
     space_ = std::dynamic_pointer_cast<GridSE2StateSpace>(si_->getStateSpace());
-    if (!space_) space_ = ownGridSpace();  // any other SE(2) space: a lattice from the parameters
+    if (!space_) space_ = ownGridSpace();  // any other SE(2) space: the map's cells, or cells from the parameters
     width_ = space_->width();
     height_ = space_->height();
     straightStep_ = space_->cellSize();

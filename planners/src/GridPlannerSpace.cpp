@@ -70,6 +70,16 @@ bool GridPlanner::fitsAtSomeHeading(double x, double y) const
 
 std::shared_ptr<GridSE2StateSpace> GridPlanner::ownGridSpace()
 {
+    if (checker_)
+    {
+        // gridcar's checker on OMPL's Dubins / Reeds-Shepp space: the map's own cells
+        const OccupancyGrid &g = checker_->grid();
+        if (!ownSpace_ || ownSpace_->width() != g.width() || ownSpace_->height() != g.height() ||
+            ownSpace_->cellSize() != g.resolution() || ownSpace_->originX() != g.originX() ||
+            ownSpace_->originY() != g.originY())
+            ownSpace_ = std::make_shared<GridSE2StateSpace>(g, 8);
+        return ownSpace_;
+    }
     const auto &b = si_->getStateSpace()->as<ompl::base::SE2StateSpace>()->getBounds();
     const double sx = b.high[0] - b.low[0], sy = b.high[1] - b.low[1];
     if (!(sx > 0 && sy > 0) || !std::isfinite(sx) || !std::isfinite(sy))

@@ -1,11 +1,13 @@
 #include "gridcar/planners/PlanQuery.h"
 
 #include "gridcar/core/Errors.h"
+#include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/planners/SmoothedPlanner.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/PlannerData.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 
 #include <algorithm>
@@ -68,6 +70,63 @@ double progressValue(const ompl::base::Planner &planner, const std::string &prop
     return it == props.end() ? 0.0 : std::strtod(it->second().c_str(), nullptr);
 }
 
+namespace
+{
+/// The poses along a Reeds-Shepp path's curves, at most @p step apart, every segment end (so
+/// every cusp) included exactly.
+std::vector<Pose2> reedsSheppPoses(const ompl::base::ReedsSheppStateSpace &rs, const ompl::geometric::PathGeometric &path,
+                                   double step)
+{
+    std::vector<Pose2> out;
+    if (path.getStateCount() == 0) return out;
+    out.push_back(toPose(path.getState(0)));
+    ompl::base::State *tmp = rs.allocState();
+    for (std::size_t i = 1; i < path.getStateCount(); ++i)
+    {
+        const ompl::base::State *a = path.getState(i - 1), *b = path.getState(i);
+        auto curve = rs.reedsShepp(a, b);
+        const double unit = curve.length(), metres = rs.distance(a, b);
+        if (!(unit > 0))
+            continue;
+        std::vector<double> ts;
+        const int n = std::max(1, int(std::ceil(metres / step)));
+        for (int k = 1; k <= n; ++k) ts.push_back(double(k) / n);
+        double acc = 0;
+        for (double l : curve.length_)
+        {
+            acc += std::abs(l);
+            if (acc < unit) ts.push_back(acc / unit);
+        }
+        std::sort(ts.begin(), ts.end());
+        bool first = true;
+        for (double t : ts)
+        {
+            rs.interpolate(a, b, t, first, curve, tmp);
+            out.push_back(toPose(tmp));
+        }
+    }
+    rs.freeState(tmp);
+    return out;
+}
+}  // namespace
+
+std::vector<Pose2> solutionPoses(const GridSetup &setup, const ompl::base::Planner &planner)
+{
+    ompl::geometric::PathGeometric path = setup.ss->getSolutionPath();
+    // on Dubins / Reeds-Shepp, an OMPL planner's consecutive states are joined by the space's
+    // curves: the poses along them, at most the validity resolution apart (grid planners'
+    // paths are their own poses: dense car-lattice curves, or the papers' grid polylines)
+    const auto *wrapper = dynamic_cast<const SmoothedPlanner *>(&planner);
+    const bool ours = dynamic_cast<const GridPlanner *>(&planner) ||
+                      (wrapper && wrapper->method() == SmoothedPlanner::Method::PaperI);
+    if (setup.kind == SpaceKind::SE2 || ours) return toPoses(path);
+    const auto &space = setup.ss->getStateSpace();
+    if (const auto *rs = dynamic_cast<const ompl::base::ReedsSheppStateSpace *>(space.get()))
+        return reedsSheppPoses(*rs, path, space->getLongestValidSegmentLength());
+    path.interpolate();
+    return toPoses(path);
+}
+
 QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &start, const Pose2 &goal,
                      double timeLimit)
 {
@@ -79,10 +138,10 @@ QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, co
     const auto t0 = Clock::now();
     q.status = setup.ss->solve(timeLimit);
     q.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    if (setup.ss->haveSolutionPath()) q.path = toPoses(setup.ss->getSolutionPath());
+    if (setup.ss->haveSolutionPath()) q.path = solutionPoses(setup, *planner);
     q.rawPath = q.path;
     q.expanded = std::uint64_t(progressValue(*planner, "expanded nodes INTEGER"));
-    q.metrics = computePathMetrics(q.path, setup.checker.get());
+    q.metrics = computePathMetrics(q.path, setup.checker.get(), TurnParams(), setup.reversing());
     q.maxTurnDeg = q.metrics.maxTurnDeg;
     const auto *report = dynamic_cast<const SmoothingReport *>(planner.get());
     if (report && !report->lastSmoothing().path.empty())
@@ -98,7 +157,9 @@ QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, co
     }
     const bool searchCost = planner->getPlannerProgressProperties().count("search cost REAL") > 0;
     q.cost = searchCost ? progressValue(*planner, "search cost REAL") : q.metrics.length;
-    if (!q.path.empty()) q.drivability = checkDrivable(q.path, *setup.checker);
+    DrivabilityOptions drive;
+    drive.reversing = setup.reversing();
+    if (!q.path.empty()) q.drivability = checkDrivable(q.path, *setup.checker, drive);
     return q;
 }
 

@@ -38,10 +38,9 @@ std::vector<std::string> plannerNames()
 
 namespace
 {
-/// True (and @p base set to NAME) if @p name is "NAME+smooth".
-bool splitSmooth(const std::string &name, std::string &base)
+/// True (and @p base set to NAME) if @p name is "NAME" + @p suffix.
+bool splitSuffix(const std::string &name, std::string &base, const std::string &suffix)
 {
-    const std::string suffix = "+smooth";
     if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
     base = name.substr(0, name.size() - suffix.size());
     return true;
@@ -51,7 +50,7 @@ bool splitSmooth(const std::string &name, std::string &base)
 bool isPlannerName(const std::string &name)
 {
     std::string base = name;
-    splitSmooth(name, base);
+    if (!splitSuffix(name, base, "+smooth")) splitSuffix(name, base, "+simplify");
     const auto known = plannerNames();
     return std::find(known.begin(), known.end(), base) != known.end();
 }
@@ -59,12 +58,14 @@ bool isPlannerName(const std::string &name)
 ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name)
 {
     namespace og = ompl::geometric;
-    if (std::string base; splitSmooth(name, base))
-    {
-        auto p = std::make_shared<SmoothedPlanner>(makePlanner(si, base));
-        p->setName(name);
-        return p;
-    }
+    for (const auto &[suffix, method] : {std::make_pair(std::string("+smooth"), SmoothedPlanner::Method::PaperI),
+                                          std::make_pair(std::string("+simplify"), SmoothedPlanner::Method::OmplSimplifier)})
+        if (std::string base; splitSuffix(name, base, suffix))
+        {
+            auto p = std::make_shared<SmoothedPlanner>(makePlanner(si, base), method);
+            p->setName(name);
+            return p;
+        }
     if (name == "dijkstra") return std::make_shared<GridAStar>(si, GridHeuristic::Zero, name);
     if (name == "astar-manhattan") return std::make_shared<GridAStar>(si, GridHeuristic::Manhattan, name);
     if (name == "astar-euclidean") return std::make_shared<GridAStar>(si, GridHeuristic::Euclidean, name);
@@ -82,7 +83,7 @@ ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, co
     std::string known;
     for (const auto &n : plannerNames()) known += (known.empty() ? "" : ", ") + n;
     throw std::invalid_argument("unknown planner '" + name + "' (known: " + known +
-                                "; any of them + \"+smooth\" adds paper I's post-processing)");
+                                "; any of them + \"+smooth\" adds paper I's post-processing, + \"+simplify\" OMPL's path simplifier)");
 }
 
 }  // namespace gridcar

@@ -6,6 +6,7 @@
 
 #include <ompl/base/goals/GoalRegion.h>
 #include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/PathSimplifier.h>
 
 namespace gridcar
 {
@@ -18,8 +19,11 @@ SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, co
     return res;
 }
 
-SmoothedPlanner::SmoothedPlanner(ompl::base::PlannerPtr inner)
-  : ompl::base::Planner(inner->getSpaceInformation(), inner->getName() + "+smooth"), inner_(std::move(inner))
+SmoothedPlanner::SmoothedPlanner(ompl::base::PlannerPtr inner, Method method)
+  : ompl::base::Planner(inner->getSpaceInformation(),
+                        inner->getName() + (method == Method::PaperI ? "+smooth" : "+simplify"))
+  , inner_(std::move(inner))
+  , method_(method)
 {
     specs_ = inner_->getSpecs();
     params_ = inner_->params();  // copies hold the inner planner's setter / getter functions
@@ -35,7 +39,7 @@ void SmoothedPlanner::setProblemDefinition(const ompl::base::ProblemDefinitionPt
 void SmoothedPlanner::setup()
 {
     ompl::base::Planner::setup();
-    if (!std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker()))
+    if (method_ == Method::PaperI && !std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker()))
         throw ompl::Exception(getName(), "needs gridcar's footprint validity checker (see gridcar::makeGridSetup)");
     inner_->setup();
 }
@@ -62,6 +66,11 @@ ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTermin
     if (!pdef->hasSolution()) return st;
     auto *path = pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
     if (!path || path->getStateCount() < 3) return st;
+    if (method_ == Method::OmplSimplifier)
+    {
+        ompl::geometric::PathSimplifier(si_, pdef->getGoal()).simplify(*path, ptc);
+        return st;
+    }
     // a car-lattice path is drivable as searched: paper I's smoothing would only move it off
     // the curves whose footprint was checked
     if (const auto *g = dynamic_cast<const GridPlanner *>(inner_.get()); g && g->carSearch()) return st;

@@ -3,6 +3,11 @@
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+
+#include <cmath>
+#include <stdexcept>
 
 namespace gridcar
 {
@@ -16,17 +21,35 @@ GridSetup makeGridSetup(std::shared_ptr<const OccupancyGrid> grid, const Vehicle
     s.checker = std::make_shared<FootprintChecker>(s.grid, s.field, vehicle);
     s.checker->setSweepFraction(options.sweepFraction);
     s.space = std::make_shared<GridSE2StateSpace>(*grid, options.headingBins);
-    s.ss = std::make_shared<ompl::geometric::SimpleSetup>(s.space);
+    s.kind = options.space;
+    ompl::base::StateSpacePtr planSpace = s.space;
+    const double radius = vehicle.minTurningRadius();
+    if (s.kind != SpaceKind::SE2)
+    {
+        if (!(radius > 0) || !std::isfinite(radius))
+            throw std::invalid_argument("a " + spaceKindName(s.kind) + " space needs a vehicle with a turning radius (" +
+                                        vehicle.name + " has none)");
+        std::shared_ptr<ompl::base::SE2StateSpace> car;
+        if (s.kind == SpaceKind::Dubins) car = std::make_shared<ompl::base::DubinsStateSpace>(radius);
+        else car = std::make_shared<ompl::base::ReedsSheppStateSpace>(radius);
+        car->setBounds(s.space->getBounds());
+        planSpace = car;
+    }
+    s.ss = std::make_shared<ompl::geometric::SimpleSetup>(planSpace);
     const auto &si = s.ss->getSpaceInformation();
     si->setStateValidityChecker(std::make_shared<FootprintValidityChecker>(si, s.checker));
-    si->setMotionValidator(std::make_shared<FootprintMotionValidator>(si, s.checker));
-    si->setStateValidityCheckingResolution(0.5 * grid->resolution() / s.space->getMaximumExtent());
+    const double step = options.sweepFraction * grid->resolution();
+    if (s.kind == SpaceKind::SE2)
+        si->setMotionValidator(std::make_shared<FootprintMotionValidator>(si, s.checker));
+    else
+        si->setMotionValidator(std::make_shared<CurveMotionValidator>(si, s.checker, radius, step));
+    si->setStateValidityCheckingResolution(0.5 * grid->resolution() / planSpace->getMaximumExtent());
     return s;
 }
 
 void GridSetup::setStartAndGoal(const Pose2 &start, const Pose2 &goal) const
 {
-    ompl::base::ScopedState<ompl::base::SE2StateSpace> a(space), b(space);
+    ompl::base::ScopedState<ompl::base::SE2StateSpace> a(ss->getStateSpace()), b(ss->getStateSpace());
     a->setXY(start.x, start.y);
     a->setYaw(start.yaw);
     b->setXY(goal.x, goal.y);

@@ -51,9 +51,10 @@ struct QueryArgs
     std::vector<std::string> params;
     double timeLimit{10.0};
     bool smooth{false};
+    std::string space{"se2"};
 };
 /// --map, --unknown-free, --planner (required or not), --start / --start-cell, --goal /
-/// --goal-cell, --vehicle, --param, --time-limit, --smooth.
+/// --goal-cell, --vehicle, --param, --time-limit, --smooth, --space.
 void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired);
 
 /// A query made concrete: the map, the vehicle, the setup and the poses.

@@ -125,10 +125,13 @@ bool pathToDrive(const DriveOptions &o, Query &query, std::vector<Pose2> &path, 
         if (const std::string why = whyInvalid(query, pose, what == "start" ? !query.startYaw : !query.goalYaw); !why.empty())
             throw InputError(what + " " + describe(pose) + " is " + why);
     const QueryResult q = runQuery(query.setup, queryPlanner(p, query), query.start, query.goal, p.timeLimit);
+    DrivingTimeParams profile;
+    profile.reversing = query.setup.reversing();  // a stop at each Reeds-Shepp cusp
     j["plan"] = {{"planner", p.planner},         {"status", q.status.asString()}, {"cost", q.cost},
                  {"length", q.metrics.length},   {"expanded", q.expanded},        {"turns", q.metrics.turns},
                  {"max_turn_deg", q.maxTurnDeg}, {"time", q.seconds},             {"min_clearance", q.metrics.minClearance},
-                 {"driving_time_profile", drivingTime(q.path, query.vehicle)},
+                 {"driving_time_profile", drivingTime(q.path, query.vehicle, profile)},
+                 {"cusps", q.metrics.cusps},
                  {"drivable", q.drivability.drivable}};
     if (q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
     {

@@ -2,6 +2,7 @@
 #include "Cli.h"
 
 #include "gridcar/bench/Format.h"
+#include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/planners/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
@@ -15,7 +16,7 @@ namespace gridcar::cli
 {
 void addMapOption(CLI::App *cmd, std::string &map)
 {
-    cmd->add_option("--map", map, "Map file (.yaml, .map, .ppm, .pgm, .png)")->required();
+    cmd->add_option("--map", map, "Map file (.yaml, .map, .ppm, .pgm, .png), or 'embedded' for the embedded campus")->required();
 }
 
 void addVehicleOption(CLI::App *cmd, std::string &vehicle)
@@ -49,13 +50,20 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
                   "Post-process any planner's path as paper I does (line of sight, turning-point adjustment under K_max, "
                   "Bezier); improved-astar does this itself unless --param smooth=0");
     cmd->add_flag("--unknown-free", q.unknownFree, "Treat unknown cells as free");
+    cmd->add_option("--space", q.space,
+                    "State space: se2 (gridcar's: straight motions, the car may slide sideways), dubins or reeds-shepp "
+                    "(OMPL's, at the vehicle's minimum turning radius; motions checked along the curves: OMPL's planners "
+                    "then return drivable paths; reeds-shepp paths may reverse, their cusps counted)")
+        ->check(CLI::IsMember({"se2", "dubins", "reeds-shepp"}))
+        ->capture_default_str();
 }
 
 Query loadQuery(const QueryArgs &q, bool withPoses)
 {
     bench::checkTimeLimit(q.timeLimit);
     Query query;
-    query.grid = std::make_shared<OccupancyGrid>(loadMap(q.map));
+    query.grid = std::make_shared<OccupancyGrid>(q.map == "embedded" && !std::filesystem::exists(q.map) ? generateCampus()
+                                                                                                         : loadMap(q.map));
     query.grid->setUnknownIsFree(q.unknownFree);
     query.vehicle = VehicleParams::fromNameOrFile(q.vehicle);
     if (withPoses)  // before the set-up: a malformed pose fails at once
@@ -63,7 +71,16 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
         query.start = parsePose(q.start, q.startCell, "start", *query.grid, query.startYaw);
         query.goal = parsePose(q.goal, q.goalCell, "goal", *query.grid, query.goalYaw);
     }
-    query.setup = makeGridSetup(query.grid, query.vehicle);
+    SetupOptions so;
+    so.space = parseSpaceKind(q.space);
+    try
+    {
+        query.setup = makeGridSetup(query.grid, query.vehicle, so);
+    }
+    catch (const std::invalid_argument &e)
+    {
+        throw InputError(std::string("--space ") + q.space + ": " + e.what());
+    }
     if (withPoses)
     {
         double yaw = 0;

@@ -37,6 +37,7 @@ nlohmann::json resultJson(const QueryResult &q, const VehicleParams &vehicle)
     j["min_clearance"] = m.minClearance;
     j["min_path_distance"] = m.minPathDistance;
     j["max_curvature"] = m.maxCurvature;
+    j["cusps"] = m.cusps;
     j["time"] = q.seconds;
     j["smoothing_time"] = q.smoothingSeconds;
     j["smoothed"] = q.smoothed;
@@ -62,6 +63,7 @@ void printResult(const std::string &planner, const QueryResult &q)
     std::printf("\n  length %.2f m, cost %.2f, %d poses, %d turns, max turn %.1f deg, max curvature %.3f 1/m, "
                 "min clearance %.2f m (path line %.2f m from obstacles)",
                 m.length, q.cost, int(q.path.size()), m.turns, q.maxTurnDeg, m.maxCurvature, m.minClearance, m.minPathDistance);
+    if (m.cusps) std::printf(", %d cusp(s)", m.cusps);
     if (q.expanded) std::printf(", %llu nodes expanded", (unsigned long long)q.expanded);
     if (!q.path.empty())
         std::printf("\n  %s", q.drivability.drivable ? "drivable: body free at 2 cm steps, curvature within K_max"
@@ -128,7 +130,7 @@ Command addPlanCommand(CLI::App &app)
     auto *c = app.add_subcommand("plan", "Plan one path on a map with a grid planner or an OMPL planner");
     addQueryOptions(c, o->query, true);
     c->add_flag("--json", o->json,
-                "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, "
+                "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, cusps, "
                 "min_path_distance, smoothing_time, min_clearance, time, drivable (and not_drivable_because), "
                 "path [[x, y, yaw_rad], ...]");
     c->add_option("--out", o->outCsv, "Write the path as CSV (x,y,yaw)");

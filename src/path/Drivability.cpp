@@ -1,6 +1,7 @@
 #include "gridcar/path/Drivability.h"
 
 #include "gridcar/core/Angles.h"
+#include "gridcar/path/Cusps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +9,48 @@
 
 namespace gridcar
 {
+namespace
+{
+/// The body along one piece (yaw of each segment, turned round when driven backwards) and its
+/// curvature; @p s0 is the arc length where the piece starts.
+void checkPiece(const std::vector<Pose2> &pts, bool backward, double s0, const FootprintChecker &checker, double step,
+                Drivability &d, double &worstDeviation)
+{
+    double s = s0;
+    for (std::size_t i = 1; i < pts.size() && d.firstCollision < 0; ++i)
+    {
+        const Pose2 &a = pts[i - 1], &b = pts[i];
+        const double len = std::hypot(b.x - a.x, b.y - a.y);
+        const double yaw = std::atan2(b.y - a.y, b.x - a.x) + (backward ? M_PI : 0.0);
+        const int n = std::max(1, int(std::ceil(len / step)));
+        for (int k = 0; k <= n; ++k)  // each vertex at the yaw of both its segments
+        {
+            const double t = double(k) / n;
+            ++d.posesChecked;
+            if (!checker.isValidExact(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), yaw))
+            {
+                d.firstCollision = s + t * len;
+                break;
+            }
+        }
+        s += len;
+    }
+    // curvature at each vertex: the heading change over the arc between the midpoints of its
+    // segments (half their summed length, the usual turning-angle estimate); and a
+    // kink must lie within one step of the curve of radius R_min that rounds it
+    const double kmax = checker.vehicle().maxCurvature();
+    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
+    {
+        const double l0 = std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+        const double l1 = std::hypot(pts[i + 1].x - pts[i].x, pts[i + 1].y - pts[i].y);
+        const double theta = std::abs(wrapAngle(headingOf(pts[i], pts[i + 1]) - headingOf(pts[i - 1], pts[i])));
+        d.maxCurvature = std::max(d.maxCurvature, theta / (0.5 * (l0 + l1)));
+        if (std::isfinite(kmax) && theta > 1e-9)
+            worstDeviation = std::max(worstDeviation, theta >= M_PI - 1e-9 ? HUGE_VAL : (1.0 / std::cos(theta / 2) - 1.0) / kmax);
+    }
+}
+}  // namespace
+
 Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker &checker, const DrivabilityOptions &options)
 {
     Drivability d;
@@ -27,38 +70,20 @@ Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker
         return d;
     }
     const double step = options.step > 0 ? options.step : 0.02;
-    double s = 0.0;
-    for (std::size_t i = 1; i < pts.size() && d.firstCollision < 0; ++i)
-    {
-        const Pose2 &a = pts[i - 1], &b = pts[i];
-        const double len = std::hypot(b.x - a.x, b.y - a.y), yaw = std::atan2(b.y - a.y, b.x - a.x);
-        const int n = std::max(1, int(std::ceil(len / step)));
-        for (int k = 0; k <= n; ++k)  // each vertex at the yaw of both its segments
-        {
-            const double t = double(k) / n;
-            ++d.posesChecked;
-            if (!checker.isValidExact(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), yaw))
-            {
-                d.firstCollision = s + t * len;
-                break;
-            }
-        }
-        s += len;
-    }
-    // curvature at each vertex: the heading change over the arc between the midpoints of its
-    // segments (half their summed length, the usual turning-angle estimate); and a
-    // kink must lie within one step of the curve of radius R_min that rounds it
-    const double kmax = checker.vehicle().maxCurvature();
     double worstDeviation = 0.0;
-    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
+    if (!options.reversing)
+        checkPiece(pts, false, 0.0, checker, step, d, worstDeviation);
+    else
     {
-        const double l0 = std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
-        const double l1 = std::hypot(pts[i + 1].x - pts[i].x, pts[i + 1].y - pts[i].y);
-        const double theta = std::abs(wrapAngle(headingOf(pts[i], pts[i + 1]) - headingOf(pts[i - 1], pts[i])));
-        d.maxCurvature = std::max(d.maxCurvature, theta / (0.5 * (l0 + l1)));
-        if (std::isfinite(kmax) && theta > 1e-9)
-            worstDeviation = std::max(worstDeviation, theta >= M_PI - 1e-9 ? HUGE_VAL : (1.0 / std::cos(theta / 2) - 1.0) / kmax);
+        double s0 = 0.0;
+        for (const PathPiece &piece : splitAtCusps(pts))
+        {
+            checkPiece(piece.poses, piece.backward, s0, checker, step, d, worstDeviation);
+            for (std::size_t i = 1; i < piece.poses.size(); ++i)
+                s0 += std::hypot(piece.poses[i].x - piece.poses[i - 1].x, piece.poses[i].y - piece.poses[i - 1].y);
+        }
     }
+    const double kmax = checker.vehicle().maxCurvature();
     char buf[160];
     if (d.firstCollision >= 0)
     {

@@ -15,7 +15,10 @@ namespace
 double dist(const Pose2 &a, const Pose2 &b) { return std::hypot(b.x - a.x, b.y - a.y); }
 }  // namespace
 
-PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintChecker *checker, const TurnParams &tp)
+namespace
+{
+PathMetrics pieceMetrics(const std::vector<Pose2> &path, const FootprintChecker *checker, const TurnParams &tp,
+                         bool backward)
 {
     PathMetrics m;
     if (path.empty()) return m;
@@ -86,7 +89,7 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
             bestLine = std::min(bestLine, field.distance(pts[i].x, pts[i].y));
             if (i + 1 == pts.size()) break;
             const double len = dist(pts[i], pts[i + 1]);
-            const double yaw = std::atan2(pts[i + 1].y - pts[i].y, pts[i + 1].x - pts[i].x);
+            const double yaw = std::atan2(pts[i + 1].y - pts[i].y, pts[i + 1].x - pts[i].x) + (backward ? M_PI : 0.0);
             const int k = int(std::ceil(len / step));
             for (int j = 1; j < k; ++j)
             {
@@ -99,6 +102,32 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
         m.minClearance = std::isfinite(best) ? best : 0.0;
         m.minPathDistance = std::isfinite(bestLine) ? bestLine : 0.0;
     }
+    return m;
+}
+
+}  // namespace
+
+PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintChecker *checker, const TurnParams &tp,
+                               bool reversing)
+{
+    if (!reversing) return pieceMetrics(path, checker, tp, false);
+    const std::vector<PathPiece> pieces = splitAtCusps(path);
+    if (pieces.size() == 1) return pieceMetrics(pieces[0].poses, checker, tp, pieces[0].backward);
+    PathMetrics m;
+    m.minClearance = m.minPathDistance = std::numeric_limits<double>::infinity();
+    for (const PathPiece &piece : pieces)
+    {
+        const PathMetrics q = pieceMetrics(piece.poses, checker, tp, piece.backward);
+        m.length += q.length;
+        m.turns += q.turns;
+        m.maxTurnDeg = std::max(m.maxTurnDeg, q.maxTurnDeg);
+        m.turningPoints += q.turningPoints;
+        m.minClearance = std::min(m.minClearance, q.minClearance);
+        m.minPathDistance = std::min(m.minPathDistance, q.minPathDistance);
+        m.maxCurvature = std::max(m.maxCurvature, q.maxCurvature);
+    }
+    if (!checker) m.minClearance = m.minPathDistance = 0.0;
+    m.cusps = int(pieces.size()) - 1;
     return m;
 }
 

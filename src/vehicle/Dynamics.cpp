@@ -1,5 +1,7 @@
 #include "gridcar/vehicle/Dynamics.h"
 
+#include "gridcar/path/Cusps.h"
+
 #include "gridcar/core/Angles.h"
 
 #include <algorithm>
@@ -87,7 +89,13 @@ double VelocityProfile::speedAt(double at) const
 
 double drivingTime(const std::vector<Pose2> &path, const VehicleParams &v, const DrivingTimeParams &p)
 {
-    return velocityProfile(path, v, p).time;
+    if (!p.reversing) return velocityProfile(path, v, p).time;
+    DrivingTimeParams one = p;
+    one.reversing = false;
+    one.stopAtEnds = true;  // the car stops at every cusp
+    double t = 0.0;
+    for (const PathPiece &piece : splitAtCusps(path)) t += velocityProfile(piece.poses, v, one).time;
+    return t;
 }
 
 VelocityProfile velocityProfile(const std::vector<Pose2> &path, const VehicleParams &v, const DrivingTimeParams &p)
@@ -103,7 +111,8 @@ VelocityProfile velocityProfile(const std::vector<Pose2> &path, const VehiclePar
     std::vector<double> xs, ys;
     double total = 0;
     for (std::size_t i = 1; i < pts.size(); ++i) total += std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
-    const int n = std::max(1, int(std::ceil(total / p.sampleStep)));
+    // at least one interior sample: a short piece from rest to rest still accelerates
+    const int n = std::max(2, int(std::ceil(total / p.sampleStep)));
     const double ds = total / n;
     std::size_t seg = 1;
     double segStart = 0;

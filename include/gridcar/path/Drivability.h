@@ -15,6 +15,9 @@ struct DrivabilityOptions
 {
     double step{0.02};                ///< m between checked poses along the path
     double curvatureTolerance{1e-3};  ///< relative slack on K_max (rounding of sampled curves)
+    /// A Reeds-Shepp path: split at its cusps (splitAtCusps()), a piece driven backwards
+    /// checked with the body turned round, the reversal itself no curvature.
+    bool reversing{false};
 };
 
 /// The verdict of checkDrivable().

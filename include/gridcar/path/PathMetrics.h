@@ -3,6 +3,7 @@
 /// @brief Path measures shared by the CLI, the benchmarks and the simulation.
 
 #include "gridcar/collision/FootprintChecker.h"
+#include "gridcar/path/Cusps.h"
 
 #include <vector>
 
@@ -26,6 +27,7 @@ struct PathMetrics
     double minClearance{0.0};   ///< m, FootprintChecker::clearance minimum along the path
     double minPathDistance{0.0}; ///< m, smallest obstacle distance d_O of the path line itself (paper I's "nearest distance to the curb")
     double maxCurvature{0.0};   ///< 1/m, largest Menger curvature of consecutive vertices (maxMengerCurvature())
+    int cusps{0};               ///< reversals (with `reversing`: Reeds-Shepp paths; splitAtCusps())
 };
 
 /**
@@ -48,9 +50,13 @@ struct PathMetrics
  *   far the path line stays from obstacle cell centres (paper I's metric; > D/2 keeps a
  *   vehicle centred on the line off the curb sideways).
  * - Clearance: FootprintChecker::clearance at the path's poses and at points every half cell
- *   along each segment (yaw of the segment); 0 if any of them collides.
+ *   along each segment (yaw of the segment, reversed on a piece driven backwards); 0 if any of
+ *   them collides.
+ * - With @p reversing (a path of a Reeds-Shepp space), the path is split at its cusps
+ *   (splitAtCusps()) and each piece measured on its own: the reversal itself is no turn and no
+ *   curvature; `cusps` counts them. Without it every step counts as forward.
  */
 PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintChecker *checker,
-                               const TurnParams &turnParams = TurnParams());
+                               const TurnParams &turnParams = TurnParams(), bool reversing = false);
 
 }  // namespace gridcar

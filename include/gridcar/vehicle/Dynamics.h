@@ -51,6 +51,8 @@ struct DrivingTimeParams
     double sampleStep{0.25};  ///< m between profile samples
     double window{2.0};       ///< m, chord before / after a sample for its heading change
     bool stopAtEnds{true};    ///< start from rest and stop at the goal
+    /// A Reeds-Shepp path: a stop at each cusp (splitAtCusps()), each piece from rest to rest.
+    bool reversing{false};
 };
 
 /// The speed limit of @p v through a heading change of @p thetaRad over a window of arc

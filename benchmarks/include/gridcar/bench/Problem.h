@@ -6,6 +6,7 @@
 #include "gridcar/core/Errors.h"
 #include "gridcar/core/Pose2.h"
 #include "gridcar/map/OccupancyGrid.h"
+#include "gridcar/spaces/CarSpaces.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -28,6 +29,11 @@ struct Problem
     double delta{1.0};
     double resample{0.0};  ///< > 0: resample the map to this many metres per cell
     double timeLimit{5.0};
+    /// `time_limits: [1, 5, 10]`: every query is benchmarked once per limit (experiments
+    /// named NAME-qK-tT); empty: `time_limit` alone.
+    std::vector<double> timeLimits;
+    /// `space: se2 | dubins | reeds-shepp` (makeGridSetup's SetupOptions::space).
+    SpaceKind space{SpaceKind::SE2};
     double memoryMb{4096.0};
     unsigned runs{3};
     std::vector<YAML::Node> queries;

@@ -74,6 +74,10 @@ struct QueryResult
 QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &start, const Pose2 &goal,
                      double timeLimit);
 
+/// The poses of the set-up's solution path: on a Dubins / Reeds-Shepp space an OMPL planner's
+/// states with the poses along the curves between them (at most the validity resolution
+/// apart); a gridcar planner's path as it is.
+std::vector<Pose2> solutionPoses(const GridSetup &setup, const ompl::base::Planner &planner);
 /// Cells of the states @p planner explored in its last solve() (its PlannerData vertices).
 std::vector<Cell> exploredCells(const ompl::base::Planner &planner, const OccupancyGrid &grid);
 

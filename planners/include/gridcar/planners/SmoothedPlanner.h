@@ -37,11 +37,21 @@ SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, co
  * FootprintValidityChecker on the space information (ompl::Exception in setup() otherwise).
  * A grid planner searching the car lattice (corner-astar, improved-astar by default) returns
  * drivable curves already; its path is passed through unchanged.
+ * With Method::OmplSimplifier it is OMPL's own simplifier instead (shortcuts checked by the
+ * space information's motion validator: on a Reeds-Shepp set-up, the footprint along the
+ * curves); it needs no gridcar type and reports no SmoothingResult.
  */
 class SmoothedPlanner : public ompl::base::Planner, public SmoothingReport
 {
 public:
-    explicit SmoothedPlanner(ompl::base::PlannerPtr inner);
+    /// What the wrapper does to the inner planner's path.
+    enum class Method
+    {
+        PaperI,         ///< smoothPath() (name suffix "+smooth")
+        OmplSimplifier  ///< OMPL's PathSimplifier::simplify() in the time left, as
+                        ///< SimpleSetup::simplifySolution() would (name suffix "+simplify")
+    };
+    explicit SmoothedPlanner(ompl::base::PlannerPtr inner, Method method = Method::PaperI);
     void setProblemDefinition(const ompl::base::ProblemDefinitionPtr &pdef) override;
     void setup() override;
     void clear() override;
@@ -49,11 +59,13 @@ public:
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
     void getPlannerData(ompl::base::PlannerData &data) const override;
     const ompl::base::PlannerPtr &inner() const { return inner_; }
+    Method method() const { return method_; }
     const SmoothingResult &lastSmoothing() const override { return last_; }
     const std::vector<Pose2> &lastRawPath() const override { return raw_; }
 
 private:
     ompl::base::PlannerPtr inner_;
+    Method method_;
     SmoothingResult last_;
     std::vector<Pose2> raw_;
 };

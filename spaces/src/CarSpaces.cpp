@@ -1,0 +1,97 @@
+#include "gridcar/spaces/CarSpaces.h"
+
+#include "gridcar/spaces/OmplAdapters.h"
+
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gridcar
+{
+SpaceKind parseSpaceKind(const std::string &name)
+{
+    if (name == "se2") return SpaceKind::SE2;
+    if (name == "dubins") return SpaceKind::Dubins;
+    if (name == "reeds-shepp") return SpaceKind::ReedsShepp;
+    throw std::invalid_argument("unknown state space '" + name + "' (choose se2, dubins or reeds-shepp)");
+}
+
+std::string spaceKindName(SpaceKind kind)
+{
+    switch (kind)
+    {
+        case SpaceKind::Dubins: return "dubins";
+        case SpaceKind::ReedsShepp: return "reeds-shepp";
+        default: return "se2";
+    }
+}
+
+CurveMotionValidator::CurveMotionValidator(const ompl::base::SpaceInformationPtr &si,
+                                           std::shared_ptr<const FootprintChecker> checker, double turningRadius,
+                                           double step)
+  : ompl::base::MotionValidator(si), checker_(std::move(checker)), radius_(turningRadius), step_(step)
+{
+    if (!(radius_ > 0) || !(step_ > 0)) throw std::invalid_argument("CurveMotionValidator needs a radius and a step > 0");
+}
+
+CurveMotionValidator::~CurveMotionValidator() = default;
+
+int CurveMotionValidator::firstBlocked(const ompl::base::State *s1, const ompl::base::State *s2, int &n,
+                                       bool endFirst) const
+{
+    const auto &space = si_->getStateSpace();
+    const double len = space->distance(s1, s2);  // the curve's length
+    n = std::max(1, int(std::ceil(len * (1.0 + checker_->reach() / radius_) / step_)));
+    if (endFirst && !checker_->isValid(toPose(s2))) return n;  // the cheapest rejection first
+    ompl::base::State *tmp = si_->allocState();
+    // OMPL's interpolation that computes the curve once and reuses it for every t
+    const auto *rs = dynamic_cast<const ompl::base::ReedsSheppStateSpace *>(space.get());
+    const auto *db = dynamic_cast<const ompl::base::DubinsStateSpace *>(space.get());
+    bool first = true;
+    ompl::base::ReedsSheppStateSpace::ReedsSheppPath rsPath;
+    ompl::base::DubinsStateSpace::DubinsPath dbPath;
+    int blocked = -1;
+    for (int i = 1; i <= n && blocked < 0; ++i)
+    {
+        const double t = double(i) / n;
+        if (rs) rs->interpolate(s1, s2, t, first, rsPath, tmp);
+        else if (db) db->interpolate(s1, s2, t, first, dbPath, tmp);
+        else space->interpolate(s1, s2, t, tmp);
+        if (!checker_->isValid(toPose(tmp))) blocked = i;
+    }
+    si_->freeState(tmp);
+    return blocked;
+}
+
+bool CurveMotionValidator::checkMotion(const ompl::base::State *s1, const ompl::base::State *s2) const
+{
+    int n = 0;
+    const bool ok = firstBlocked(s1, s2, n, true) < 0;
+    if (ok) ++valid_;
+    else ++invalid_;
+    return ok;
+}
+
+bool CurveMotionValidator::checkMotion(const ompl::base::State *s1, const ompl::base::State *s2,
+                                       std::pair<ompl::base::State *, double> &lastValid) const
+{
+    int n = 0;
+    const int b = firstBlocked(s1, s2, n, false);
+    if (b < 0)
+    {
+        ++valid_;
+        return true;
+    }
+    // the last valid pose is the one before the first blocked pose
+    const double t = double(b - 1) / n;
+    if (lastValid.first) si_->getStateSpace()->interpolate(s1, s2, t, lastValid.first);
+    lastValid.second = t;
+    ++invalid_;
+    return false;
+}
+
+}  // namespace gridcar

@@ -1,0 +1,32 @@
+#include "gridcar/path/Cusps.h"
+
+#include <cmath>
+
+namespace gridcar
+{
+std::vector<PathPiece> splitAtCusps(const std::vector<Pose2> &path)
+{
+    std::vector<Pose2> pts;
+    for (const Pose2 &p : path)
+        if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+    std::vector<PathPiece> out;
+    if (pts.empty()) return out;
+    out.push_back({{pts[0]}, false});
+    int dir = 0;  // 0 unknown, +1 forward, -1 backward
+    for (std::size_t i = 1; i < pts.size(); ++i)
+    {
+        const double dx = pts[i].x - pts[i - 1].x, dy = pts[i].y - pts[i - 1].y;
+        const double a = dx * std::cos(pts[i - 1].yaw) + dy * std::sin(pts[i - 1].yaw);
+        const double b = dx * std::cos(pts[i].yaw) + dy * std::sin(pts[i].yaw);
+        const int step = a > 0 && b > 0 ? 1 : a < 0 && b < 0 ? -1 : dir;
+        if (dir != 0 && step != 0 && step != dir)
+            out.push_back({{pts[i - 1]}, step < 0});  // a cusp at pts[i - 1]
+        else if (dir == 0 && step != 0)
+            out.back().backward = step < 0;
+        if (step != 0) dir = step;
+        out.back().poses.push_back(pts[i]);
+    }
+    return out;
+}
+
+}  // namespace gridcar
