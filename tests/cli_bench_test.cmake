@@ -94,3 +94,22 @@ file(WRITE "${WORK}/probs/p5.yaml" "map: \${shared}/maps/tiny.map\nvehicle: poin
 file(RELATIVE_PATH rel "${CMAKE_CURRENT_BINARY_DIR}" "${WORK}/sh")
 run_gridcar(0 bench "${WORK}/probs/p5.yaml" --out "${WORK}/p5" --shared "${rel}" --no-database)
 expect_in("${ERR}" "1 logs written")
+
+# Planner Arena: a Reeds-Shepp race at two time limits writes a database in OMPL's schema
+# (experiments, plannerConfigs, runs, progress), every exact path drivable
+file(WRITE "${WORK}/arena.yaml" "name: arena\nmap: embedded\nvehicle: paper-i\nspace: reeds-shepp\ntime_limits: [0.6, 1.2]\nruns: 1\nqueries:\n  - {start: [504.365, 384.271], goal: [587.805, 345.829]}\nplanners:\n  - corner-astar\n  - rrtstar\n  - rrtconnect+simplify\n")
+run_gridcar(0 bench "${WORK}/arena.yaml" --out "${WORK}/arena")
+expect_in("${ERR}" "query 1 at 1.2 s")
+execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/tests/planner_arena_schema.py" "${WORK}/arena/arena.db" 2
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the database does not load in Planner Arena's schema: ${out}${err}")
+endif()
+message(STATUS "${out}")
+file(READ "${WORK}/arena/report.md" report)
+expect_in("${report}" "## Summary: best driving time per planner and query")
+expect_in("${report}" "| corner-astar |")
+run_gridcar(2 bench "${WORK}/arena.yaml" --out "${WORK}/arena2" --report-note "it's")
+file(WRITE "${WORK}/bad-space.yaml" "name: bad\nmap: embedded\nspace: hovercraft\nqueries:\n  - {start: [1, 1], goal: [2, 2]}\nplanners: [rrt]\n")
+run_gridcar(2 bench "${WORK}/bad-space.yaml" --out "${WORK}/bad")
+expect_in("${ERR}" "hovercraft")

@@ -45,3 +45,28 @@ expect_in("${OUT}" "Approximate solution")
 
 run_gridcar(0 scen --map "${WORK}/t.map" --scen "${WORK}/t.map.scen")
 expect_in("${OUT}" "1 / 1 paths match")
+
+# OMPL's RRT* on Reeds-Shepp curves on the embedded campus (paper I's car): the path it returns
+# passes the independent dense check (FCL footprint every 2 cm, curvature <= K_max = 0.538 1/m)
+execute_process(COMMAND "${GRIDCAR}" plan --map embedded --space reeds-shepp --planner rrtstar
+  --start 504.365,384.271 --goal 587.805,345.829 --time-limit 5 --json
+  OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+if(NOT (rc EQUAL 0 OR rc EQUAL 3))
+  message(FATAL_ERROR "plan --space reeds-shepp --planner rrtstar: exit ${rc}\n${err}")
+endif()
+string(JSON drivable GET "${out}" drivable)
+string(JSON kappa GET "${out}" max_curvature)
+string(JSON cusps GET "${out}" cusps)
+string(JSON status GET "${out}" status)
+message(STATUS "rrtstar on reeds-shepp: ${status}, max curvature ${kappa}, ${cusps} cusp(s), drivable ${drivable}")
+if(NOT drivable STREQUAL "ON" AND NOT drivable STREQUAL "true")
+  string(JSON why ERROR_VARIABLE none GET "${out}" not_drivable_because)
+  message(FATAL_ERROR "rrtstar's Reeds-Shepp path is not drivable: ${why}")
+endif()
+if(kappa GREATER 0.5385)
+  message(FATAL_ERROR "rrtstar's Reeds-Shepp path has curvature ${kappa} > K_max")
+endif()
+run_gridcar(2 plan --map embedded --space hybrid --planner rrtstar --start 504.365,384.271 --goal 587.805,345.829)
+expect_in("${ERR}" "--space")
+run_gridcar(2 plan ${M} --space reeds-shepp --planner rrtstar --start-cell 0,0 --goal-cell 11,5)
+expect_in("${ERR}" "turning radius")

@@ -172,7 +172,9 @@ void benchmarkQuery(BenchRun &run, std::size_t qi, double timeLimit, const std::
     bool startYaw = false, goalYaw = false;
     Pose2 start = readPose(p, p.queries[qi], "start", *run.w.grid, startYaw, qi);
     Pose2 goal = readPose(p, p.queries[qi], "goal", *run.w.grid, goalYaw, qi);
-    const std::string q = "query " + std::to_string(qi + 1);
+    char limitText[48] = "";
+    if (!limitTag.empty()) std::snprintf(limitText, sizeof limitText, " at %g s", timeLimit);
+    const std::string q = "query " + std::to_string(qi + 1) + limitText;
     // without a yaw the heading is free: the pose gets the first yaw at which the vehicle fits
     // (OMPL's planners start there; ours choose their own)
     if (!startYaw) setup.checker->fitsAtSomeHeading(start.x, start.y, 72, &start.yaw);
@@ -207,7 +209,7 @@ void benchmarkQuery(BenchRun &run, std::size_t qi, double timeLimit, const std::
             return pl;
         });
     }
-    std::map<std::string, unsigned> runOf;
+    std::map<std::string, unsigned> runOf;  // runs per planner of this experiment
     Clock::time_point solveStart;
     double firstSolution = -1;  // s after the run's start; -1: not reported by the planner
     b.setPreRunEvent([&](const ompl::base::PlannerPtr &pl) {
@@ -316,6 +318,7 @@ int runBench(const BenchOptions &o)
                 ++run.total;
             }
     const std::vector<double> limits = p.timeLimits.empty() ? std::vector<double>{p.timeLimit} : p.timeLimits;
+    run.total *= limits.size();
     for (std::size_t qi = 0; qi < p.queries.size(); ++qi)
         if (!run.mine[qi].empty())
             for (double limit : limits)

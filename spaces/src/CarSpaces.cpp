@@ -61,7 +61,10 @@ int CurveMotionValidator::firstBlocked(const ompl::base::State *s1, const ompl::
         if (rs) rs->interpolate(s1, s2, t, first, rsPath, tmp);
         else if (db) db->interpolate(s1, s2, t, first, dbPath, tmp);
         else space->interpolate(s1, s2, t, tmp);
-        if (!checker_->isValid(toPose(tmp))) blocked = i;
+        // the end state exactly (a state of the path, already valid by the checker); the poses
+        // between with the rectangle grown by half the step: no body point moves farther than
+        // the step between two poses, so the swept motion is certified, not only its samples
+        if (!(i == n ? checker_->isValid(toPose(tmp)) : checker_->isValidInflated(toPose(tmp), 0.5 * step_))) blocked = i;
     }
     si_->freeState(tmp);
     return blocked;

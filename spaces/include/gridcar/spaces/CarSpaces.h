@@ -27,11 +27,14 @@ SpaceKind parseSpaceKind(const std::string &name);
 std::string spaceKindName(SpaceKind kind);
 
 /**
- * @brief Motion validity on a Dubins or Reeds-Shepp space: the footprint (FootprintChecker's
- * exact test) at poses along the space's curve from s1 to s2, spaced so that no point of the
- * vehicle moves more than @p step metres between two of them (the curve's length x (1 +
- * reach / R) / step poses, both ends included). With the set-up's half a map cell, the car
- * OMPL's planners drive is checked at least every half cell, not only its path's points.
+ * @brief Motion validity on a Dubins or Reeds-Shepp space: the footprint at poses along the
+ * space's curve from s1 to s2, spaced so that no point of the vehicle moves more than @p step
+ * metres between two of them (the curve's length x (1 + reach / R) / step poses), each pose
+ * between the ends with the rectangle grown by step / 2 (FootprintChecker::isValidInflated), so
+ * that the swept motion is free, not only its samples; the end state with the exact rectangle.
+ * With the set-up's half a map cell, the car OMPL's planners drive is certified along its
+ * whole path (up to the first half step after a state, which the state's own check covers
+ * only exactly).
  */
 class CurveMotionValidator : public ompl::base::MotionValidator
 {
