@@ -17,7 +17,7 @@ struct BenchOptions
     unsigned runs{0};           ///< > 0 overrides the problem file's
     bool noDatabase{false};     ///< only the .log files
     std::string reportScript;   ///< empty: defaultReportScript()
-    std::string reportNote;     ///< a paragraph under the report's title (no single quotes)
+    std::string reportNote;     ///< a paragraph under the report's title
 };
 
 /// Benchmark of one problem file (progress on stderr); 0 also when the problem's shared map is
