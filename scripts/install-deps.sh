@@ -10,6 +10,7 @@ PACKAGES=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libstb-dev
   libgtest-dev libbenchmark-dev
   ompl-demos python3 python3-matplotlib
+  clang libclang-rt-14-dev
 )
 
 missing=()

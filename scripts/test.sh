@@ -2,13 +2,20 @@
 # The test job: install what is missing, build, and run the whole test suite through CTest;
 # then build the library, the program and the tests again under AddressSanitizer +
 # UndefinedBehaviorSanitizer (./build-asan, leaks detected, no recovery from undefined
-# behaviour) and run the suite there too, except the 14 wall-clock time-limit tests.
-# GRIDCAR_SKIP_SANITIZERS=1 skips that second run.
+# behaviour) and run the suite there too, except the wall-clock time-limit tests; then build the
+# libFuzzer targets with clang (./build-fuzz) and run each for 30 s on its seed corpus
+# (scripts/fuzz.sh; GRIDCAR_FUZZ_SECONDS changes the 30).
+# GRIDCAR_SKIP_SANITIZERS=1 skips the second run, GRIDCAR_SKIP_FUZZ=1 the fuzzing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2 --timeout 1200
+if [ "${GRIDCAR_SKIP_FUZZ:-0}" = "1" ]; then
+  echo "[gridcar] fuzzing skipped (GRIDCAR_SKIP_FUZZ=1)"
+else
+  bash scripts/fuzz.sh "${GRIDCAR_FUZZ_SECONDS:-30}"
+fi
 if [ "${GRIDCAR_SKIP_SANITIZERS:-0}" = "1" ]; then
   echo "[gridcar] sanitizer run skipped (GRIDCAR_SKIP_SANITIZERS=1)"
   exit 0

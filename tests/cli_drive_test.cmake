@@ -47,3 +47,9 @@ endforeach()
 if(NOT EXISTS "${WORK}/p1/paper_i_campus_area3.png")
   message(FATAL_ERROR "paper-i did not draw the areas")
 endif()
+
+# a scenario whose obstacle drives off the map is refused, naming the file and the obstacle
+file(WRITE "${WORK}/away.yaml" "obstacles:\n  - {name: drone, shape: disc, radius: 0.3, waypoints: [[545, 355], [1e6, 372]]}\n")
+run_gridcar(2 drive ${Q} --planner corner-astar --scenario "${WORK}/away.yaml")
+expect_in("${ERR}" "away.yaml: obstacle 1 (drone): waypoint")
+expect_in("${ERR}" "is outside the map")

@@ -1,5 +1,6 @@
 #include "gridcar/planners/GridPlanner.h"
 
+#include "gridcar/path/Drivability.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/PlannerData.h>
@@ -28,6 +29,7 @@ GridPlanner::GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::s
                        &GridPlanner::freeStartHeading, "0,1");
     declareParam<double>("turning_radius", this, &GridPlanner::setTurningRadius, &GridPlanner::turningRadiusParam,
                          "0.:0.1:100.");
+    declareParam<double>("max_memory_mb", this, &GridPlanner::setMaxMemoryMb, &GridPlanner::maxMemoryMb, "0.:256.:65536.");
     declareParam<double>("lattice_cell", this, &GridPlanner::setLatticeCell, &GridPlanner::latticeCell, "0.:0.05:5.");
     declareParam<bool>("match_goal_heading", this, &GridPlanner::setMatchGoalHeading,
                        &GridPlanner::matchGoalHeading, "0,1");
@@ -170,11 +172,12 @@ bool GridPlanner::isGoal(int col, int row, int dir) const
     return goalRegion_->isSatisfied(scratchB_);
 }
 
-ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminationCondition &ptc)
+ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminationCondition &timeLimit)
 {
     using ompl::base::PlannerStatus;
     checkValidity();
     freeDataStates();  // PlannerData states are cached by search state, which a new search renumbers
+    const ompl::base::PlannerTerminationCondition ptc = withMemoryBound(timeLimit);
     if (car_) return solveCarLattice(ptc);
     lastPath_.clear();
     lastExpanded_ = 0;
@@ -223,9 +226,9 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     lastExpanded_ = res.expanded;
     progressExpanded_ = res.expanded;
     if (res.outcome == SearchOutcome::Cancelled && res.closest == SearchSpace::kNoParent)
-        return PlannerStatus::TIMEOUT;
+        return memoryStopped_ ? memoryStatus(false) : PlannerStatus(PlannerStatus::TIMEOUT);
     const std::uint32_t end = res.outcome == SearchOutcome::Found ? res.goal : res.closest;
-    if (end == SearchSpace::kNoParent) return PlannerStatus::TIMEOUT;
+    if (end == SearchSpace::kNoParent) return memoryStopped_ ? memoryStatus(false) : PlannerStatus(PlannerStatus::TIMEOUT);
     for (std::uint32_t s = end; s != SearchSpace::kNoParent; s = parentOf(s)) lastPath_.push_back(s);
     std::reverse(lastPath_.begin(), lastPath_.end());
     lastCost_ = gOf(end);
@@ -247,11 +250,27 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     if (exact)
         if (auto *gs = dynamic_cast<const ompl::base::GoalState *>(goal))
             if (lastPath_.size() > 1 || !si_->equalStates(start, gs->getState())) path->append(gs->getState());
-    postProcess(*path);
+    bool exactAndDrivable = exact;
+    // an approximate path stopped by the time limit is returned as it is: smoothing it would
+    // run past the limit
+    const bool smooth = exact || !ptc.eval();
+    if (smooth && postProcess(*path) && exact && checker_)
+    {
+        // a smoothed path is a drivable solution only if the independent check says so
+        const Drivability d = checkDrivable(toPoses(*path), *checker_);
+        if (!d.drivable)
+        {
+            exactAndDrivable = false;
+            lastStopReason_ = "the smoothed path is not drivable: " + d.reason;
+            OMPL_WARN("%s: %s", getName().c_str(), lastStopReason_.c_str());
+        }
+    }
     double dist = 0.0;
     goalRegion_->isSatisfied(path->getState(path->getStateCount() - 1), &dist);
-    pdef_->addSolutionPath(path, !exact, exact ? 0.0 : dist, getName());
-    if (exact) return PlannerStatus::EXACT_SOLUTION;
+    pdef_->addSolutionPath(path, !exactAndDrivable, exact ? 0.0 : dist, getName());
+    if (exactAndDrivable) return PlannerStatus::EXACT_SOLUTION;
+    if (exact) return PlannerStatus::APPROXIMATE_SOLUTION;
+    if (memoryStopped_) return memoryStatus(true);
     if (res.outcome == SearchOutcome::Cancelled) return PlannerStatus(PlannerStatus::TIMEOUT);
     return PlannerStatus::APPROXIMATE_SOLUTION;
 }

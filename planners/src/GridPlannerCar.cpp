@@ -157,6 +157,7 @@ ompl::base::PlannerStatus GridPlanner::solveCarLattice(const ompl::base::Planner
     lastCost_ = r.cost;
     if (r.path.empty())
     {
+        if (memoryStopped_) return memoryStatus(false);
         if (r.outcome == SearchOutcome::Cancelled) return PlannerStatus::TIMEOUT;
         OMPL_ERROR("%s: the vehicle fits at no lattice heading at the start", getName().c_str());
         return PlannerStatus::INVALID_START;
@@ -166,6 +167,7 @@ ompl::base::PlannerStatus GridPlanner::solveCarLattice(const ompl::base::Planner
     pdef_->getGoal()->isSatisfied(path->getState(path->getStateCount() - 1), &dist);
     pdef_->addSolutionPath(path, !r.exact, r.exact ? 0.0 : dist, getName());
     if (r.exact) return PlannerStatus::EXACT_SOLUTION;
+    if (memoryStopped_) return memoryStatus(true);
     if (r.outcome == SearchOutcome::Cancelled) return PlannerStatus(PlannerStatus::TIMEOUT);
     return PlannerStatus::APPROXIMATE_SOLUTION;
 }

@@ -4,11 +4,16 @@
 /// the turning radius from the space, and the default car's dynamics.
 #include "gridcar/planners/GridPlanner.h"
 
+#include "gridcar/core/Memory.h"
+
 #include <ompl/base/ScopedState.h>
+#include <ompl/util/Console.h>
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -33,6 +38,43 @@ double spaceTurningRadius(const ompl::base::StateSpacePtr &space)
     return 0.0;
 }
 }  // namespace
+
+void GridPlanner::setMaxMemoryMb(double mb)
+{
+    if (!std::isfinite(mb) || mb < 0.0 || mb > 1e7)
+        throw std::invalid_argument(getName() + ": max_memory_mb must be 0 (no bound) or a size in MB up to 1e7");
+    maxMemoryMb_ = mb;
+}
+
+ompl::base::PlannerTerminationCondition GridPlanner::withMemoryBound(const ompl::base::PlannerTerminationCondition &ptc)
+{
+    memoryStopped_ = false;
+    lastStopReason_.clear();
+    if (!(maxMemoryMb_ > 0) || residentMegabytes() < 0) return ptc;
+    using Clock = std::chrono::steady_clock;
+    auto next = std::make_shared<Clock::time_point>(Clock::now());
+    const ompl::base::PlannerTerminationCondition memory([this, next] {
+        const auto now = Clock::now();
+        if (memoryStopped_) return true;
+        if (now < *next) return false;
+        *next = now + std::chrono::milliseconds(10);
+        const double mb = residentMegabytes();
+        if (mb <= maxMemoryMb_) return false;
+        memoryStopped_ = true;
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "stopped at the memory bound: resident memory %.0f MB > max_memory_mb %.0f MB", mb,
+                      maxMemoryMb_);
+        lastStopReason_ = buf;
+        return true;
+    });
+    return ompl::base::plannerOrTerminationCondition(ptc, memory);
+}
+
+ompl::base::PlannerStatus GridPlanner::memoryStatus(bool pathAdded) const
+{
+    OMPL_WARN("%s: %s", getName().c_str(), lastStopReason_.c_str());
+    return pathAdded ? ompl::base::PlannerStatus::APPROXIMATE_SOLUTION : ompl::base::PlannerStatus::ABORT;
+}
 
 void GridPlanner::setTurningRadius(double r)
 {

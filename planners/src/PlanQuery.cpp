@@ -157,6 +157,12 @@ QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, co
     }
     const bool searchCost = planner->getPlannerProgressProperties().count("search cost REAL") > 0;
     q.cost = searchCost ? progressValue(*planner, "search cost REAL") : q.metrics.length;
+    const GridPlanner *grid = dynamic_cast<const GridPlanner *>(planner.get());
+    if (const auto *w = dynamic_cast<const SmoothedPlanner *>(planner.get()))
+        grid = dynamic_cast<const GridPlanner *>(w->inner().get());
+    if (grid) q.notExactBecause = grid->lastStopReason();
+    if (report && !report->lastSmoothing().notDrivable.empty())
+        q.notExactBecause = "the smoothed path is not drivable: " + report->lastSmoothing().notDrivable;
     DrivabilityOptions drive;
     drive.reversing = setup.reversing();
     if (!q.path.empty()) q.drivability = checkDrivable(q.path, *setup.checker, drive);

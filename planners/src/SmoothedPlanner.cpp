@@ -1,10 +1,12 @@
 #include "gridcar/planners/SmoothedPlanner.h"
 
 #include "gridcar/planners/GridPlanner.h"
+#include "gridcar/path/Drivability.h"
 
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/goals/GoalRegion.h>
+#include <ompl/util/Console.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/PathSimplifier.h>
 
@@ -66,6 +68,9 @@ ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTermin
     if (!pdef->hasSolution()) return st;
     auto *path = pdef->getSolutionPath()->as<ompl::geometric::PathGeometric>();
     if (!path || path->getStateCount() < 3) return st;
+    // out of time without an exact solution: the inner planner's path as it is (smoothing it
+    // would run past the limit)
+    if (st != ompl::base::PlannerStatus::EXACT_SOLUTION && ptc.eval()) return st;
     if (method_ == Method::OmplSimplifier)
     {
         ompl::geometric::PathSimplifier(si_, pdef->getGoal()).simplify(*path, ptc);
@@ -77,11 +82,24 @@ ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTermin
     auto vc = std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker());
     auto out = std::make_shared<ompl::geometric::PathGeometric>(*path);
     last_ = smoothSolutionPath(si_, vc->checker(), *out, raw_);
-    const bool approximate = pdef->hasApproximateSolution();
+    bool approximate = pdef->hasApproximateSolution();
     const double difference = pdef->getSolutionDifference();
+    ompl::base::PlannerStatus result = st;
+    if (st == ompl::base::PlannerStatus::EXACT_SOLUTION)
+    {
+        // an exact solution stays exact only if the smoothed path passes the independent check
+        const Drivability d = checkDrivable(last_.path, vc->checker());
+        if (!d.drivable)
+        {
+            last_.notDrivable = d.reason;
+            approximate = true;
+            result = ompl::base::PlannerStatus::APPROXIMATE_SOLUTION;
+            OMPL_WARN("%s: the smoothed path is not drivable: %s", getName().c_str(), d.reason.c_str());
+        }
+    }
     pdef->clearSolutionPaths();
     pdef->addSolutionPath(out, approximate, difference, getName());
-    return st;
+    return result;
 }
 
 void SmoothedPlanner::getPlannerData(ompl::base::PlannerData &data) const { inner_->getPlannerData(data); }

@@ -152,6 +152,17 @@ int runDrive(const DriveOptions &o)
     Query query = loadQuery(o.query, o.pathCsv.empty());
     Scenario sc;
     if (!o.scenario.empty()) sc = Scenario::load(o.scenario);
+    // a waypoint off the map is a mistake in the file (a wrong frame, a typo), not a scenario
+    const OccupancyGrid &g = *query.grid;
+    for (std::size_t i = 0; i < sc.obstacles.size(); ++i)
+        for (const auto &[x, y] : sc.obstacles[i].waypoints)
+            if (!(x >= g.originX() && x <= g.originX() + g.sizeX() && y >= g.originY() && y <= g.originY() + g.sizeY()))
+                throw MapLoadError(o.scenario, "obstacle " + std::to_string(i + 1) + " (" + sc.obstacles[i].name +
+                                                   "): waypoint " + describe({x, y, 0.0}) +
+                                                   " is outside the map (x " + std::to_string(g.originX()) + " .. " +
+                                                   std::to_string(g.originX() + g.sizeX()) + ", y " +
+                                                   std::to_string(g.originY()) + " .. " +
+                                                   std::to_string(g.originY() + g.sizeY()) + ")");
     nlohmann::json j;
     std::vector<Pose2> path;
     if (!pathToDrive(o, query, path, j))

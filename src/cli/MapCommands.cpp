@@ -58,12 +58,34 @@ struct DemoOptions
     std::string vehicle{"paper-i"};
 };
 
+/// What a planning set-up on a map of @p cells cells holds per map, in MB (the structures
+/// are sized by the map, not by a query): the grid, the distance field (d_O, d_V, GVD: 9 bytes
+/// a cell), the grid planners' move cache (8 bytes a cell), their dense search records (16
+/// bytes a state, committed as touched: dijkstra / astar-*: a state a cell; corner-astar
+/// mode=paper: 8), and the car lattice's 2D heuristic nodes (24 bytes a node of about 0.45 m).
+nlohmann::json memoryEstimate(const OccupancyGrid &g)
+{
+    const double mb = 1.0 / (1024.0 * 1024.0), cells = double(g.size());
+    const double nodes = (g.sizeX() / 0.45 + 3) * (g.sizeY() / 0.45 + 3);
+    return {{"map", cells * mb},
+            {"distance_field", 9 * cells * mb},
+            {"move_cache", 8 * cells * mb},
+            {"dense_search", 16 * cells * mb},
+            {"corner_paper_search", 16 * 8 * cells * mb},
+            {"car_lattice_heuristic", 24 * nodes * mb}};
+}
+
+/// Above this many cells `info` does not build the distance field (2^26 cells: 576 MB of field).
+constexpr std::size_t kInfoFieldCells = std::size_t(1) << 26;
+
 int runInfo(const InfoOptions &o)
 {
     OccupancyGrid grid = loadMap(o.map);
     const OccupancyGrid::Counts counts = grid.counts();
     grid.setUnknownIsFree(o.unknownFree);
-    const DistanceField field(grid);
+    std::unique_ptr<DistanceField> field;
+    if (grid.size() <= kInfoFieldCells) field = std::make_unique<DistanceField>(grid);
+    const nlohmann::json memory = memoryEstimate(grid);
     if (o.json)
     {
         nlohmann::json j;
@@ -74,7 +96,8 @@ int runInfo(const InfoOptions &o)
         j["free"] = counts.free;
         j["occupied"] = counts.occupied;
         j["unknown"] = counts.unknown;
-        j["max_clearance"] = field.maxDistance();
+        j["max_clearance"] = field ? nlohmann::json(field->maxDistance()) : nlohmann::json(nullptr);
+        j["memory_mb"] = memory;
         std::cout << j.dump() << "\n";
         return 0;
     }
@@ -87,8 +110,17 @@ int runInfo(const InfoOptions &o)
     std::printf("cells      free %zu (%.1f %%), occupied %zu (%.1f %%), unknown %zu (%.1f %%)\n", counts.free,
                 100.0 * counts.free / n, counts.occupied, 100.0 * counts.occupied / n, counts.unknown,
                 100.0 * counts.unknown / n);
-    std::printf("clearance  max %.2f m (unknown counted as %s)\n", field.maxDistance(),
-                o.unknownFree ? "free" : "occupied");
+    if (field)
+        std::printf("clearance  max %.2f m (unknown counted as %s)\n", field->maxDistance(),
+                    o.unknownFree ? "free" : "occupied");
+    else
+        std::printf("clearance  not computed: %zu cells (> 2^26); the distance field alone needs %.0f MB\n", grid.size(),
+                    memory["distance_field"].get<double>());
+    std::printf("memory     per-map structures of a planning set-up, MB: map %.0f, distance field %.0f; grid planners: "
+                "move cache %.0f, dense search up to %.0f (corner-astar mode=paper %.0f); car lattice 2D heuristic %.0f\n",
+                memory["map"].get<double>(), memory["distance_field"].get<double>(), memory["move_cache"].get<double>(),
+                memory["dense_search"].get<double>(), memory["corner_paper_search"].get<double>(),
+                memory["car_lattice_heuristic"].get<double>());
     return 0;
 }
 
@@ -182,7 +214,7 @@ int runDemo(const DemoOptions &o)
 Command addInfoCommand(CLI::App &app)
 {
     auto o = std::make_shared<InfoOptions>();
-    auto *c = app.add_subcommand("info", "Print a map's size, origin, cell counts and max clearance");
+    auto *c = app.add_subcommand("info", "Print a map's size, origin, cell counts, max clearance and the memory a planning set-up on it takes");
     addMapOption(c, o->map);
     c->add_flag("--json", o->json,
                 "Print one JSON object: width, height, resolution, origin, free, occupied, unknown (counts as read), "

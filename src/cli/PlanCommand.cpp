@@ -48,6 +48,7 @@ nlohmann::json resultJson(const QueryResult &q, const VehicleParams &vehicle)
     }
     j["vehicle"] = vehicle.name;
     j["drivable"] = q.drivability.drivable;
+    if (!q.notExactBecause.empty()) j["not_exact_because"] = q.notExactBecause;
     if (!q.drivability.drivable) j["not_drivable_because"] = q.drivability.reason;
     nlohmann::json jp = nlohmann::json::array();
     for (const Pose2 &p : q.path) jp.push_back({p.x, p.y, p.yaw});
@@ -60,6 +61,7 @@ void printResult(const std::string &planner, const QueryResult &q)
     const PathMetrics &m = q.metrics;
     std::printf("%s: %s in %.3f s", planner.c_str(), q.status.asString().c_str(), q.seconds);
     if (q.smoothed) std::printf(" (smoothing %.4f s)", q.smoothingSeconds);
+    if (!q.notExactBecause.empty()) std::printf(" (%s)", q.notExactBecause.c_str());
     std::printf("\n  length %.2f m, cost %.2f, %d poses, %d turns, max turn %.1f deg, max curvature %.3f 1/m, "
                 "min clearance %.2f m (path line %.2f m from obstacles)",
                 m.length, q.cost, int(q.path.size()), m.turns, q.maxTurnDeg, m.maxCurvature, m.minClearance, m.minPathDistance);
@@ -131,7 +133,8 @@ Command addPlanCommand(CLI::App &app)
     addQueryOptions(c, o->query, true);
     c->add_flag("--json", o->json,
                 "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, cusps, "
-                "min_path_distance, smoothing_time, min_clearance, time, drivable (and not_drivable_because), "
+                "min_path_distance, smoothing_time, min_clearance, time, drivable (and not_drivable_because), not_exact_because "
+                "(a grid planner stopped at its memory bound), "
                 "path [[x, y, yaw_rad], ...]");
     c->add_option("--out", o->outCsv, "Write the path as CSV (x,y,yaw)");
     c->add_option("--png", o->png, "Write a picture of the map, the path (before smoothing in orange) and the states the "

@@ -5,6 +5,7 @@
 
 #include "gridcar/collision/FootprintChecker.h"
 
+#include <string>
 #include <vector>
 
 namespace gridcar
@@ -44,6 +45,9 @@ struct SmoothingResult
     int bezierFallbacks{0};            ///< corners kept sharp because their Bezier piece collided
     double maxCurvature{0.0};          ///< of the output path (Menger curvature of its samples), 1/m
     double seconds{0.0};               ///< wall time of the whole post-processing
+    /// Set by the planners that smooth an exact solution: why the smoothed path failed the
+    /// independent drivable check (checkDrivable()); the solution is then only approximate
+    std::string notDrivable;
 };
 
 /**

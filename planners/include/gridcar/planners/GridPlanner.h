@@ -17,6 +17,7 @@
 #include <functional>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -79,6 +80,17 @@ public:
     double lastCost() const { return lastCost_; }
     /// Seconds spent in the search loop itself by the last solve() (no path building).
     double lastSearchSeconds() const { return lastSearchSeconds_; }
+    /// Memory bound (`max_memory_mb`, MB; 0 = none; default 8192, a third of a 24 GB
+    /// machine): solve() stops when the process's resident memory exceeds it (checked every
+    /// 10 ms through the termination condition), and returns APPROXIMATE_SOLUTION with the
+    /// path to the explored state nearest the goal, or ABORT when there is none;
+    /// lastStopReason() says why.
+    double maxMemoryMb() const { return maxMemoryMb_; }
+    void setMaxMemoryMb(double mb);
+    /// Why the last solve() returned no exact solution though not out of time: stopped at the
+    /// memory bound, or (a planner that smooths) its smoothed path failed checkDrivable() and is
+    /// returned as an approximate solution. Empty otherwise.
+    const std::string &lastStopReason() const { return lastStopReason_; }
 
     /// Turning radius of the car lattice's arcs (`turning_radius`, m); 0 = automatic: the
     /// vehicle's R_min with gridcar's checker, the space's radius on OMPL's Dubins or
@@ -195,6 +207,13 @@ private:
     VehicleParams genericVehicle_;
     double turningRadius_{0.0};
 
+    /// @p ptc or'ed with the memory bound (and the stop state reset).
+    ompl::base::PlannerTerminationCondition withMemoryBound(const ompl::base::PlannerTerminationCondition &ptc);
+    /// The status a solve() that stopped at the memory bound returns, with a warning.
+    ompl::base::PlannerStatus memoryStatus(bool pathAdded) const;
+    double maxMemoryMb_{8192.0};
+    bool memoryStopped_{false};
+    std::string lastStopReason_;
     bool allowCornerCutting_{false};
     bool matchGoalHeading_{false};
     bool freeStartHeading_{false};

@@ -66,6 +66,10 @@ struct QueryResult
     /// necessarily a path the vehicle can drive (a grid path's corners, a smoothed curve that
     /// clips a curb); this says which, independently of the planner
     Drivability drivability;
+    /// Why the planner returned no exact solution though it was not out of time: a grid
+    /// planner stopped at its memory bound, or a smoothed path failed the drivable check
+    /// (GridPlanner::lastStopReason(), SmoothingResult::notDrivable); empty otherwise
+    std::string notExactBecause;
 };
 
 /// Solves start -> goal with @p planner on @p setup within @p timeLimit seconds (start / goal

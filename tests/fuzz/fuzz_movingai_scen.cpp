@@ -1,0 +1,11 @@
+// Moving AI .scen files (loadScenario).
+#include "FuzzUtil.h"
+
+#include "gridcar/map/MapIO.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
+{
+    const std::string path = gridcar::fuzz::writeFile("x.map.scen", data, size);
+    gridcar::fuzz::expectCleanly([&] { (void)gridcar::loadScenario(path); });
+    return 0;
+}
