@@ -352,3 +352,44 @@ TEST(RosMap, WriteThenReadRoundTrip)
         EXPECT_EQ(h.cells(), g.cells()) << fmt;
     }
 }
+
+TEST(RosMap, ErrorMessagesNeverEchoRawBytes)
+{
+    // found by fuzz_ros_map: yaml-cpp's message about a bad escape quoted the byte itself
+    // (tests/fuzz/regressions/fuzz_ros_map/); every MapLoadError / InputError is printable now
+    std::string text = "image: m.pgm\nresolution:";
+    text += '\0';
+    text += "\x19.5\n";
+    const std::string y = writeFile("ctl.yaml", text);
+    try
+    {
+        loadRosMap(y);
+        FAIL() << "loaded a map whose YAML has a raw control byte";
+    }
+    catch (const MapLoadError &e)
+    {
+        const std::string m = e.what();
+        for (unsigned char c : m) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "byte " << int(c) << " in: " << m;
+        EXPECT_NE(m.find("ctl.yaml"), std::string::npos) << m;
+    }
+    const InputError in(std::string("bad \x1b[31mred\x07 value\n"));
+    EXPECT_EQ(std::string(in.what()), "bad \\x1b[31mred\\x07 value\\x0a");
+}
+
+TEST(ImageReader, PngWhoseDataInflatesPastItsHeaderIsRefusedWithoutAllocating)
+{
+    // found by fuzz_image (tests/fuzz/regressions/fuzz_image/png-inflation-bomb): a 76-byte PNG
+    // declaring 243 x 3 pixels whose zlib stream stb_image inflated to 1.3 GB of buffer
+    const std::vector<std::uint8_t> png{0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0xf3, 0x00, 0x00, 0x00, 0x03, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x4d, 0x00, 0x00, 0x13, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x60, 0xf8, 0xf7, 0x8f, 0x01, 0x88, 0x81, 0xe4, 0x59, 0x20, 0x05, 0x00, 0x3c, 0xcf, 0x08, 0x32, 0x5b, 0xd3, 0xfc, 0xf4, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+    const std::string path = gridcar::test::tmpDir() + "/bomb.png";
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char *>(png.data()), std::streamsize(png.size()));
+    try
+    {
+        readImage(path);
+        FAIL() << "decoded a PNG whose data does not match its header";
+    }
+    catch (const MapLoadError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("inflates to more than the 243 x 3 pixels"), std::string::npos) << e.what();
+    }
+}

@@ -252,3 +252,15 @@ TEST(Planners, SmoothSuffixWrapsAnyPlannerInPaperIsPostProcessing)
     EXPECT_THROW(makePlanner(s.ss->getSpaceInformation(), "nothing+smooth"), std::invalid_argument);
 }
 
+
+TEST(Planners, BitStarHasNoProgressPropertyThatRacesItsPruning)
+{
+    // ompl/ompl issue #779: OMPL 1.5.2's Benchmark reads these from another thread during
+    // solve() and BIT* crashes; the factory's BIT* leaves them out and keeps the rest
+    GridSetup s = testSetup();
+    const auto p = makePlanner(s.ss->getSpaceInformation(), "bitstar");
+    const auto &props = p->getPlannerProgressProperties();
+    EXPECT_EQ(props.count("current free states INTEGER"), 0u);
+    EXPECT_EQ(props.count("current graph vertices INTEGER"), 0u);
+    EXPECT_GT(props.count("best cost DOUBLE") + props.count("best cost REAL"), 0u);
+}

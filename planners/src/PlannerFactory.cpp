@@ -38,6 +38,20 @@ std::vector<std::string> plannerNames()
 
 namespace
 {
+/// BIT* without the two progress properties that read its graph while it changes: OMPL's
+/// Benchmark samples progress properties from another thread during solve(), and in OMPL
+/// 1.5.2 these two race with BIT*'s pruning and crash the process (ompl/ompl issue #779, fixed
+/// upstream by pull request #784 after 1.5.2; our main job's Reeds-Shepp race hit it once).
+class BenchmarkSafeBITstar : public ompl::geometric::BITstar
+{
+public:
+    explicit BenchmarkSafeBITstar(const ompl::base::SpaceInformationPtr &si) : BITstar(si)
+    {
+        plannerProgressProperties_.erase("current free states INTEGER");
+        plannerProgressProperties_.erase("current graph vertices INTEGER");
+    }
+};
+
 /// True (and @p base set to NAME) if @p name is "NAME" + @p suffix.
 bool splitSuffix(const std::string &name, std::string &base, const std::string &suffix)
 {
@@ -78,7 +92,7 @@ ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, co
     if (name == "prm") return std::make_shared<og::PRM>(si);
     if (name == "prmstar") return std::make_shared<og::PRMstar>(si);
     if (name == "lazyprmstar") return std::make_shared<og::LazyPRMstar>(si);
-    if (name == "bitstar") return std::make_shared<og::BITstar>(si);
+    if (name == "bitstar") return std::make_shared<BenchmarkSafeBITstar>(si);
     if (name == "informedrrtstar") return std::make_shared<og::InformedRRTstar>(si);
     std::string known;
     for (const auto &n : plannerNames()) known += (known.empty() ? "" : ", ") + n;

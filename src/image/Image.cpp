@@ -4,6 +4,8 @@
 #include "gridcar/map/OccupancyGrid.h"
 
 #include <cctype>
+#include <climits>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -186,6 +188,50 @@ std::vector<std::uint8_t> withoutEmptyIdat(const std::vector<std::uint8_t> &png)
     return out;
 }
 
+/// A PNG whose compressed data cannot hold the pixels its header declares, or whose data
+/// inflates to more than they need, is refused before stb_image decodes it: its inflater reads
+/// zeros past the end of the data and grows its buffer (doubling up to 2 GB) for as long as
+/// the stream goes on, so a few dozen bytes could make it allocate a gigabyte (found by
+/// fuzz_image). Deflate expands at most 1032:1; the data is inflated here into a buffer of the
+/// size the header allows, no larger.
+void checkPngInflation(const std::string &path, const std::vector<std::uint8_t> &png)
+{
+    std::vector<char> idat;
+    long long w = 0, h = 0, bitsPerPixel = 8, interlaced = 0;
+    for (std::size_t i = 8; i + 12 <= png.size();)
+    {
+        const std::size_t len = (std::size_t(png[i]) << 24) | (std::size_t(png[i + 1]) << 16) | (std::size_t(png[i + 2]) << 8) | png[i + 3];
+        if (len > png.size() - i - 12) break;  // stb_image reports the truncation
+        const std::uint8_t *d = &png[i + 8];
+        if (std::memcmp(&png[i + 4], "IHDR", 4) == 0 && len >= 13)
+        {
+            w = (static_cast<long long>(d[0]) << 24) | (d[1] << 16) | (d[2] << 8) | d[3];
+            h = (static_cast<long long>(d[4]) << 24) | (d[5] << 16) | (d[6] << 8) | d[7];
+            static const int channels[7] = {1, 0, 3, 1, 2, 0, 4};
+            bitsPerPixel = d[8] * (d[9] < 7 && channels[d[9]] ? channels[d[9]] : 4);
+            interlaced = d[12];
+        }
+        else if (std::memcmp(&png[i + 4], "IDAT", 4) == 0)
+            idat.insert(idat.end(), d, d + len);
+        i += 12 + len;
+    }
+    if (w <= 0 || h <= 0) return;  // stb_image says what is wrong with the header
+    const long long rowBytes = 1 + (w * bitsPerPixel + 7) / 8;
+    const long long need = h * rowBytes, bound = need + (interlaced ? 16 * (h + 8) : 0);
+    const long long canHold = 1100LL * (long long)(idat.size()) + 1024;
+    if (need > canHold)
+        throw MapLoadError(path, "the header declares " + std::to_string(w) + " x " + std::to_string(h) + " pixels (" +
+                                     std::to_string(need) + " bytes of rows), more than its " +
+                                     std::to_string(idat.size()) + " bytes of compressed data can hold");
+    if (bound >= (long long)(INT32_MAX)) throw MapLoadError(path, "PNG too large: " + std::to_string(need) + " bytes of pixel rows");
+    std::vector<char> out(std::size_t(bound) + 1);
+    const int n = stbi_zlib_decode_buffer(out.data(), int(out.size()), idat.data(), int(idat.size()));
+    if (n < 0 || n > bound)
+        throw MapLoadError(path, "its compressed image data is corrupt or inflates to more than the " + std::to_string(w) +
+                                     " x " + std::to_string(h) + " pixels its header declares (" +
+                                     (n < 0 ? std::string(stbi_failure_reason()) : std::to_string(n) + " bytes") + ")");
+}
+
 void writeToVector(void *ctx, void *data, int size)
 {
     auto *v = static_cast<std::vector<std::uint8_t> *>(ctx);
@@ -230,6 +276,7 @@ Image readImage(const std::string &path)
         if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &comp))
             throw MapLoadError(path, std::string("bad PNG header: ") + stbi_failure_reason());
         checkDims(path, w, h);
+        checkPngInflation(path, bytes);
         unsigned char *pix = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &comp, 0);
         if (!pix) throw MapLoadError(path, std::string("cannot decode PNG: ") + stbi_failure_reason());
         Image img;

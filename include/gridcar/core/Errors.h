@@ -8,30 +8,6 @@
 
 namespace gridcar
 {
-/// Thrown for any file that cannot be read as what it claims to be. what() is
-/// "<file>: <reason>", one line.
-class MapLoadError : public std::runtime_error
-{
-public:
-    MapLoadError(const std::string &file, const std::string &reason)
-      : std::runtime_error(file + ": " + reason), file_(file), reason_(reason)
-    {
-    }
-    const std::string &file() const { return file_; }
-    const std::string &reason() const { return reason_; }
-
-private:
-    std::string file_, reason_;
-};
-
-/// Bad input from a user of a program (an argument, a problem file's value): reported on one
-/// line; the gridcar program exits with status 2.
-class InputError : public std::runtime_error
-{
-public:
-    using std::runtime_error::runtime_error;
-};
-
 /// @p text for an error message: control and non-ASCII bytes as \xNN, at most @p max
 /// characters (a hostile file must not write raw bytes to a terminal).
 inline std::string printable(const std::string &text, std::size_t max = 80)
@@ -52,5 +28,33 @@ inline std::string printable(const std::string &text, std::size_t max = 80)
     }
     return out;
 }
+
+/// Longest message of gridcar's error types (a message is one printable line).
+constexpr std::size_t kMaxErrorMessage = 2000;
+
+/// Thrown for any file that cannot be read as what it claims to be. what() is
+/// "<file>: <reason>", one printable line (control and non-ASCII bytes as \xNN, whatever a
+/// library's message about a hostile file echoes).
+class MapLoadError : public std::runtime_error
+{
+public:
+    MapLoadError(const std::string &file, const std::string &reason)
+      : std::runtime_error(printable(file + ": " + reason, kMaxErrorMessage)), file_(file), reason_(reason)
+    {
+    }
+    const std::string &file() const { return file_; }
+    const std::string &reason() const { return reason_; }
+
+private:
+    std::string file_, reason_;
+};
+
+/// Bad input from a user of a program (an argument, a problem file's value): reported on one
+/// printable line; the gridcar program exits with status 2.
+class InputError : public std::runtime_error
+{
+public:
+    explicit InputError(const std::string &message) : std::runtime_error(printable(message, kMaxErrorMessage)) {}
+};
 
 }  // namespace gridcar
