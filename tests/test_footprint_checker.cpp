@@ -177,6 +177,12 @@ TEST(VehicleParams, MissingFileOrDirectoryIsSaidSoNotAnUnknownPreset)
     EXPECT_NE(message(test::tmpDir()).find("is a directory"), std::string::npos);
     EXPECT_NE(message("tank").find("unknown vehicle preset 'tank'"), std::string::npos);
     EXPECT_THROW(VehicleParams::fromNameOrFile(test::tmpDir() + "/no-such-car.yaml"), MapLoadError);
+    // found by fuzz_vehicle_yaml: a preset name with control bytes was echoed raw
+    const std::string tabs = test::tmpDir() + "/tabs.yaml";
+    std::ofstream(tabs) << "preset: \"paper-c-\\t\\tcar\"\n";
+    const std::string m = message(tabs);
+    EXPECT_NE(m.find("paper-c-\\x09\\x09car"), std::string::npos) << m;
+    for (unsigned char c : m) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "byte " << int(c) << " in: " << m;
 }
 
 TEST(VehicleParams, ScaledKeepsTimingAndAnglesAndReadsFromYaml)

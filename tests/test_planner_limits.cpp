@@ -137,6 +137,11 @@ TEST(PlannerLimits, MemoryBoundStopsEveryGridPlannerWithAReason)
             }
         }
     }
+    // per-map arrays larger than the bound are not even allocated: ABORT with the reason
+    auto paper = configurePlanner(s.ss->getSpaceInformation(), {"corner-astar", {{"mode", "paper"}, {"max_memory_mb", "0.01"}}, true, false});
+    const QueryResult tiny = runQuery(s, paper, cellPose(g, 2, 20), cellPose(g, 20, 20), 10.0);
+    EXPECT_EQ(tiny.status, ob::PlannerStatus::ABORT);
+    EXPECT_NE(tiny.notExactBecause.find("move cache and search records"), std::string::npos) << tiny.notExactBecause;
     auto p = makePlanner(s.ss->getSpaceInformation(), "corner-astar");
     EXPECT_FALSE(p->params().setParam("max_memory_mb", "-5"));
     EXPECT_FALSE(p->params().setParam("max_memory_mb", "1e9"));

@@ -1,4 +1,5 @@
 #include "gridcar/planners/CornerAStar.h"
+#include "gridcar/core/Errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -75,7 +76,7 @@ CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanne
 void CornerAStar::setMode(const std::string &m)
 {
     if (m != "drivable" && m != "paper")
-        throw std::invalid_argument("corner-astar: mode must be 'drivable' or 'paper', got '" + m + "'");
+        throw std::invalid_argument("corner-astar: mode must be 'drivable' or 'paper', got '" + printable(m) + "'");
     drivable_ = m == "drivable";
     setup_ = false;
 }
@@ -132,7 +133,7 @@ void CornerAStar::setWeight135(double w) { userWeights_.w135 = weights_.w135 = c
 void CornerAStar::setWeightMode(const std::string &mode)
 {
     if (mode != "paper" && mode != "physics")
-        throw std::invalid_argument("corner-astar: weights must be 'paper' or 'physics', got '" + mode + "'");
+        throw std::invalid_argument("corner-astar: weights must be 'paper' or 'physics', got '" + printable(mode) + "'");
     physics_ = mode == "physics";
     setup_ = false;
 }

@@ -91,6 +91,19 @@ void GridPlanner::setup()
     }
     car_.reset();
     const std::size_t cells = std::size_t(width_) * height_;
+    // the per-map arrays of the grid lattice, refused (solve() then returns ABORT with the
+    // reason) when they alone would exceed max_memory_mb
+    const double mb = (double(cells) * 8 + (usesDenseSearch() ? 16.0 * double(stateCount()) : 0.0)) / (1024.0 * 1024.0);
+    tooBig_.clear();
+    if (maxMemoryMb_ > 0 && mb > maxMemoryMb_)
+    {
+        tooBig_ = "the grid lattice of " + std::to_string(cells) + " cells needs " + std::to_string(long(mb)) +
+                  " MB of move cache and search records, more than max_memory_mb " + std::to_string(long(maxMemoryMb_));
+        moveCache_.clear();
+        moveCache_.shrink_to_fit();
+        search_.reset();
+        return;
+    }
     if (moveCache_.size() != cells * 8) moveCache_.assign(cells * 8, 0);
     if (usesDenseSearch() && (!search_ || search_->size() != stateCount()))
         search_ = std::make_unique<SearchSpace>(stateCount());
@@ -179,6 +192,11 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     freeDataStates();  // PlannerData states are cached by search state, which a new search renumbers
     const ompl::base::PlannerTerminationCondition ptc = withMemoryBound(timeLimit);
     if (car_) return solveCarLattice(ptc);
+    if (!tooBig_.empty())
+    {
+        lastStopReason_ = tooBig_;
+        return memoryStatus(false);
+    }
     lastPath_.clear();
     lastExpanded_ = 0;
     progressExpanded_ = 0;

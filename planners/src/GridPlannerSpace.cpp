@@ -44,6 +44,7 @@ void GridPlanner::setMaxMemoryMb(double mb)
     if (!std::isfinite(mb) || mb < 0.0 || mb > 1e7)
         throw std::invalid_argument(getName() + ": max_memory_mb must be 0 (no bound) or a size in MB up to 1e7");
     maxMemoryMb_ = mb;
+    setup_ = false;
 }
 
 ompl::base::PlannerTerminationCondition GridPlanner::withMemoryBound(const ompl::base::PlannerTerminationCondition &ptc)

@@ -1,4 +1,5 @@
 #include "gridcar/planners/ImprovedAStar.h"
+#include "gridcar/core/Errors.h"
 
 #include "gridcar/planners/SmoothedPlanner.h"
 #include "gridcar/spaces/OmplAdapters.h"
@@ -35,7 +36,7 @@ std::string oneOf(const std::string &v, std::initializer_list<const char *> allo
         if (v == a) return v;
         list += (list.empty() ? "" : ", ") + std::string(a);
     }
-    throw std::invalid_argument("improved-astar: " + std::string(param) + " must be one of " + list + ", got '" + v + "'");
+    throw std::invalid_argument("improved-astar: " + std::string(param) + " must be one of " + list + ", got '" + printable(v) + "'");
 }
 }  // namespace
 

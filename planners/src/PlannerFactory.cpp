@@ -1,4 +1,5 @@
 #include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/core/Errors.h"
 
 #include "gridcar/planners/CornerAStar.h"
 #include "gridcar/planners/GridAStar.h"
@@ -96,7 +97,7 @@ ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, co
     if (name == "informedrrtstar") return std::make_shared<og::InformedRRTstar>(si);
     std::string known;
     for (const auto &n : plannerNames()) known += (known.empty() ? "" : ", ") + n;
-    throw std::invalid_argument("unknown planner '" + name + "' (known: " + known +
+    throw std::invalid_argument("unknown planner '" + printable(name) + "' (known: " + known +
                                 "; any of them + \"+smooth\" adds paper I's post-processing, + \"+simplify\" OMPL's path simplifier)");
 }
 

@@ -1,4 +1,5 @@
 #include "gridcar/spaces/CarSpaces.h"
+#include "gridcar/core/Errors.h"
 
 #include "gridcar/spaces/OmplAdapters.h"
 
@@ -17,7 +18,7 @@ SpaceKind parseSpaceKind(const std::string &name)
     if (name == "se2") return SpaceKind::SE2;
     if (name == "dubins") return SpaceKind::Dubins;
     if (name == "reeds-shepp") return SpaceKind::ReedsShepp;
-    throw std::invalid_argument("unknown state space '" + name + "' (choose se2, dubins or reeds-shepp)");
+    throw std::invalid_argument("unknown state space '" + printable(name) + "' (choose se2, dubins or reeds-shepp)");
 }
 
 std::string spaceKindName(SpaceKind kind)

@@ -1,4 +1,5 @@
 #include "gridcar/objectives/Objectives.h"
+#include "gridcar/core/Errors.h"
 
 #include "gridcar/spaces/OmplAdapters.h"
 
@@ -83,7 +84,7 @@ ob::OptimizationObjectivePtr makeObjective(const std::string &name, const ob::Sp
     if (name == "driving-time") return std::make_shared<DrivingTimeObjective>(si, checker.vehicle());
     std::string list;
     for (const auto &n : objectiveNames()) list += (list.empty() ? "" : ", ") + n;
-    throw std::invalid_argument("unknown objective '" + name + "' (known: " + list + ")");
+    throw std::invalid_argument("unknown objective '" + printable(name) + "' (known: " + list + ")");
 }
 
 }  // namespace gridcar

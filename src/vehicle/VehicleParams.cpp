@@ -130,7 +130,7 @@ VehicleParams VehicleParams::preset(const std::string &name)
     {
         std::string names;
         for (const auto &n : presetNames()) names += (names.empty() ? "" : ", ") + n;
-        throw std::invalid_argument("unknown vehicle preset '" + name + "' (known: " + names + ", or a YAML file)");
+        throw std::invalid_argument("unknown vehicle preset '" + printable(name) + "' (known: " + names + ", or a YAML file)");
     }
     return v;
 }

@@ -86,7 +86,7 @@ public:
     /// path to the explored state nearest the goal, or ABORT when there is none;
     /// lastStopReason() says why.
     double maxMemoryMb() const { return maxMemoryMb_; }
-    void setMaxMemoryMb(double mb);
+    void setMaxMemoryMb(double mb);  // takes effect at the next setup() for the per-map arrays
     /// Why the last solve() returned no exact solution though not out of time: stopped at the
     /// memory bound, or (a planner that smooths) its smoothed path failed checkDrivable() and is
     /// returned as an approximate solution. Empty otherwise.
@@ -212,6 +212,7 @@ private:
     /// The status a solve() that stopped at the memory bound returns, with a warning.
     ompl::base::PlannerStatus memoryStatus(bool pathAdded) const;
     double maxMemoryMb_{8192.0};
+    std::string tooBig_;  ///< set by setup() when the grid lattice's arrays exceed the bound
     bool memoryStopped_{false};
     std::string lastStopReason_;
     bool allowCornerCutting_{false};
