@@ -203,7 +203,7 @@ void checkPngInflation(const std::string &path, const std::vector<std::uint8_t> 
         const std::size_t len = (std::size_t(png[i]) << 24) | (std::size_t(png[i + 1]) << 16) | (std::size_t(png[i + 2]) << 8) | png[i + 3];
         if (len > png.size() - i - 12) break;  // stb_image reports the truncation
         const std::uint8_t *d = &png[i + 8];
-        if (std::memcmp(&png[i + 4], "IHDR", 4) == 0 && len >= 13)
+        if (std::memcmp(&png[i + 4], "IHDR", 4) == 0 && len >= 13 && w == 0)  // the first, as stb_image reads it
         {
             w = (static_cast<long long>(d[0]) << 24) | (d[1] << 16) | (d[2] << 8) | d[3];
             h = (static_cast<long long>(d[4]) << 24) | (d[5] << 16) | (d[6] << 8) | d[7];
@@ -215,7 +215,8 @@ void checkPngInflation(const std::string &path, const std::vector<std::uint8_t> 
             idat.insert(idat.end(), d, d + len);
         i += 12 + len;
     }
-    if (w <= 0 || h <= 0) return;  // stb_image says what is wrong with the header
+    // stb_image says what is wrong with a header like that (products below stay within 2^62)
+    if (w <= 0 || h <= 0 || w > (1LL << 28) || h > (1LL << 28)) return;
     const long long rowBytes = 1 + (w * bitsPerPixel + 7) / 8;
     const long long need = h * rowBytes, bound = need + (interlaced ? 16 * (h + 8) : 0);
     const long long canHold = 1100LL * (long long)(idat.size()) + 1024;

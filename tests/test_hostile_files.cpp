@@ -1,0 +1,87 @@
+// The readers against hostile files: the fuzz targets' findings (tests/fuzz/regressions/),
+// each replayed here as a unit test so that the normal and sanitizer runs keep them fixed.
+#include "gridcar/image/Image.h"
+#include "gridcar/map/MapIO.h"
+
+#include "TestData.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace gridcar;
+
+namespace
+{
+std::string writeFile(const std::string &name, const std::string &content)
+{
+    const std::string path = test::tmpDir() + "/" + name;
+    std::ofstream(path, std::ios::binary) << content;
+    return path;
+}
+}  // namespace
+
+TEST(RosMap, ErrorMessagesNeverEchoRawBytes)
+{
+    // found by fuzz_ros_map: yaml-cpp's message about a bad escape quoted the byte itself
+    // (tests/fuzz/regressions/fuzz_ros_map/); every MapLoadError / InputError is printable now
+    std::string text = "image: m.pgm\nresolution:";
+    text += '\0';
+    text += "\x19.5\n";
+    const std::string y = writeFile("ctl.yaml", text);
+    try
+    {
+        loadRosMap(y);
+        FAIL() << "loaded a map whose YAML has a raw control byte";
+    }
+    catch (const MapLoadError &e)
+    {
+        const std::string m = e.what();
+        for (unsigned char c : m) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "byte " << int(c) << " in: " << m;
+        EXPECT_NE(m.find("ctl.yaml"), std::string::npos) << m;
+    }
+    const InputError in(std::string("bad \x1b[31mred\x07 value\n"));
+    EXPECT_EQ(std::string(in.what()), "bad \\x1b[31mred\\x07 value\\x0a");
+}
+
+TEST(ImageReader, PngWhoseDataInflatesPastItsHeaderIsRefusedWithoutAllocating)
+{
+    // found by fuzz_image (tests/fuzz/regressions/fuzz_image/png-inflation-bomb): a 76-byte PNG
+    // declaring 243 x 3 pixels whose zlib stream stb_image inflated to 1.3 GB of buffer
+    const std::vector<std::uint8_t> png{0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0xf3, 0x00, 0x00, 0x00, 0x03, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x4d, 0x00, 0x00, 0x13, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x60, 0xf8, 0xf7, 0x8f, 0x01, 0x88, 0x81, 0xe4, 0x59, 0x20, 0x05, 0x00, 0x3c, 0xcf, 0x08, 0x32, 0x5b, 0xd3, 0xfc, 0xf4, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+    const std::string path = gridcar::test::tmpDir() + "/bomb.png";
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char *>(png.data()), std::streamsize(png.size()));
+    try
+    {
+        readImage(path);
+        FAIL() << "decoded a PNG whose data does not match its header";
+    }
+    catch (const MapLoadError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("inflates to more than the 243 x 3 pixels"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ImageReader, PngWithASecondHeaderChunkIsReadByItsFirst)
+{
+    // found by fuzz_ros_map (tests/fuzz/regressions/fuzz_ros_map/png-header-size-overflow): a
+    // second IHDR chunk's size overflowed the inflation check (undefined behaviour under the
+    // sanitizer run); the first IHDR counts, as for stb_image, and sizes stay in range
+    const std::vector<std::uint8_t> png{0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 0x03, 0x08, 0x00, 0x00, 0x00, 0x00, 0x91, 0x9f, 0xf1, 0x1a, 0x00, 0x00, 0x00, 0x13, 0x49, 0x48, 0x44, 0x52, 0x78, 0xeb, 0x9c, 0x3a, 0x63, 0x00, 0x00, 0x60, 0xc0, 0x00, 0x04, 0xc4, 0x29, 0x60, 0xf8, 0xf7, 0x8f, 0x01, 0x88, 0x81, 0xe4, 0x59, 0x20, 0x08, 0x00, 0x3c, 0xcf, 0x08, 0xfe, 0x5b, 0xd3, 0xfc, 0xf4, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+    std::ofstream(gridcar::test::tmpDir() + "/m.png", std::ios::binary)
+        .write(reinterpret_cast<const char *>(png.data()), std::streamsize(png.size()));
+    const std::string y = writeFile("two-headers.yaml", "image: m.png\nresolution: 1.05\norigin: [0, 0, 0]\nnegata: 1\noccupid_thresh: 0.65\nfr: 0.196\nmode: scale\n");
+    try
+    {
+        const OccupancyGrid g = loadRosMap(y);
+        EXPECT_EQ(g.width(), 4);
+        EXPECT_EQ(g.height(), 3);
+    }
+    catch (const MapLoadError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("two-headers.yaml"), std::string::npos) << e.what();
+    }
+}
