@@ -70,3 +70,28 @@ run_gridcar(2 plan --map embedded --space hybrid --planner rrtstar --start 504.3
 expect_in("${ERR}" "--space")
 run_gridcar(2 plan ${M} --space reeds-shepp --planner rrtstar --start-cell 0,0 --goal-cell 11,5)
 expect_in("${ERR}" "turning radius")
+
+# a tiny time limit: an answer (exact on this small map, or out of time), never a hang or a crash
+foreach(planner corner-astar improved-astar astar-octile rrtconnect)
+  execute_process(COMMAND "${GRIDCAR}" plan --map embedded --planner ${planner} --start 504.365,384.271
+    --goal 587.805,345.829 --time-limit 0.000001 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT (rc EQUAL 0 OR rc EQUAL 3))
+    message(FATAL_ERROR "plan --time-limit 0.000001 --planner ${planner}: exit ${rc}\n${out}${err}")
+  endif()
+endforeach()
+# a grid planner stopped at its memory bound says so (JSON not_exact_because, exit 3)
+run_gridcar(3 plan --map embedded --planner corner-astar --param mode=paper --param max_memory_mb=1
+  --start 504.365,384.271 --goal 587.805,345.829 --json)
+expect_in("${OUT}" "\"not_exact_because\":\"")
+expect_in("${OUT}" "max_memory_mb")
+
+# the largest map the readers accept (16384 x 16384, all free): info reports the memory a set-up
+# would take and leaves the distance field out, in seconds rather than 21 s and 6 GB
+execute_process(COMMAND /usr/bin/python3 -c
+  "import sys; f=open(sys.argv[1],'wb'); f.write(b'P5\\n16384 16384\\n255\\n'); row=bytes([254])*16384\nfor i in range(16384): f.write(row)"
+  "${WORK}/big.pgm" RESULT_VARIABLE rc)
+file(WRITE "${WORK}/big.yaml" "image: big.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n")
+run_gridcar(0 info --map "${WORK}/big.yaml" --json)
+expect_in("${OUT}" "\"max_clearance\":null")
+expect_in("${OUT}" "\"memory_mb\":{")
+file(REMOVE "${WORK}/big.pgm")
