@@ -61,7 +61,8 @@ BenchWorld loadWorld(const Problem &p)
     try
     {
         const fs::path vf = fs::path(p.file).parent_path() / p.vehicle;
-        w.vehicle = VehicleParams::fromNameOrFile(fs::exists(vf) && p.vehicle.find('.') != std::string::npos ? vf.string() : p.vehicle);
+        std::error_code ec;
+        w.vehicle = VehicleParams::fromNameOrFile(fs::exists(vf, ec) && p.vehicle.find('.') != std::string::npos ? vf.string() : p.vehicle);
     }
     catch (const std::invalid_argument &e)
     {

@@ -245,7 +245,8 @@ int runPaperC(const PaperCOptions &o)
     fs::create_directories(o.outDir);
     std::vector<MapCase> maps{{"campus", std::make_shared<const OccupancyGrid>(generateCampus())}};
     const fs::path tsu = fs::path(o.sharedDir) / "maps/ros/tsudanuma_campus/tsudanuma_all.yaml";
-    if (fs::exists(tsu))
+    std::error_code tsuError;  // a --shared path the file system refuses: no Tsudanuma map
+    if (fs::exists(tsu, tsuError))
         maps.push_back({"tsudanuma-0.298", std::make_shared<const OccupancyGrid>(loadMap(tsu.string()).resampled(0.298))});
     else
         std::fprintf(stderr, "[paper-c] %s not found: only the embedded campus map is run\n", tsu.string().c_str());

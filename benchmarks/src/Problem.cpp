@@ -55,7 +55,8 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
         if (p.map != "embedded")
         {
             if (fs::path(p.map).is_relative()) p.map = (fs::path(file).parent_path() / p.map).string();
-            if (!fs::exists(p.map))
+            std::error_code ec;  // a name the file system refuses (too long, ...) is a map that is not there
+            if (!fs::exists(p.map, ec))
             {
                 if (shared)
                 {
@@ -63,7 +64,7 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
                     skipWhy = p.map + " not found (the shared data folder is " + sharedDir + ")";
                     return p;
                 }
-                bad(p, "map file " + p.map + " does not exist");
+                bad(p, "map file " + p.map + (ec ? " cannot be looked up (" + ec.message() + ")" : " does not exist"));
             }
         }
         if (y["vehicle"]) p.vehicle = y["vehicle"].as<std::string>();

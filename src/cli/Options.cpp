@@ -62,7 +62,8 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
 {
     bench::checkTimeLimit(q.timeLimit);
     Query query;
-    query.grid = std::make_shared<OccupancyGrid>(q.map == "embedded" && !std::filesystem::exists(q.map) ? generateCampus()
+    std::error_code ec;
+    query.grid = std::make_shared<OccupancyGrid>(q.map == "embedded" && !std::filesystem::exists(q.map, ec) ? generateCampus()
                                                                                                          : loadMap(q.map));
     query.grid->setUnknownIsFree(q.unknownFree);
     query.vehicle = VehicleParams::fromNameOrFile(q.vehicle);
