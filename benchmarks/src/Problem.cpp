@@ -96,7 +96,12 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
         if (y["runs"]) p.runs = y["runs"].as<unsigned>();
         if (!y["queries"] || !y["queries"].IsSequence() || y["queries"].size() == 0)
             bad(p, "'queries' must be a non-empty list of {start | start_cell, goal | goal_cell}");
-        for (const auto &q : y["queries"]) p.queries.push_back(q);
+        for (const auto &q : y["queries"])
+        {
+            if (!q.IsMap())
+                bad(p, "query " + std::to_string(p.queries.size() + 1) + ": must be a map {start | start_cell, goal | goal_cell}");
+            p.queries.push_back(q);
+        }
         if (!y["planners"] || !y["planners"].IsSequence() || y["planners"].size() == 0)
             bad(p, "'planners' must be a non-empty list of {name, label?, params?}");
         std::set<std::string> labels;
@@ -136,6 +141,7 @@ Pose2 readPose(const Problem &p, const YAML::Node &q, const std::string &key, co
                std::size_t index)
 {
     const std::string where = "query " + std::to_string(index + 1) + ": ";
+    if (!q.IsMap()) bad(p, where + "must be a map {start | start_cell, goal | goal_cell}");
     const bool world = bool(q[key]), cell = bool(q[key + "_cell"]);
     if (world == cell) bad(p, where + "give exactly one of " + key + ": [x, y(, yaw_deg)] and " + key + "_cell: [col, row(, deg)]");
     const YAML::Node v = world ? q[key] : q[key + "_cell"];
