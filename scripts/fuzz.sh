@@ -5,6 +5,8 @@
 # corpus grows in ./build-fuzz/corpus; a crash stops the script with the target's report and
 # the input in ./build-fuzz/crashes. Prints the executions of each target.
 #   bash scripts/fuzz.sh [SECONDS] [TARGET...]
+# GRIDCAR_FUZZ_SEED=N fixes libFuzzer's seed (scripts/test.sh uses 1, so CI replays the same
+# mutations every time); without it each run explores new ones.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-300}
@@ -43,7 +45,9 @@ for t in "${TARGETS[@]}"; do
     echo "[fuzz] $t: $(ls tests/fuzz/regressions/"$t" | wc -l) regression input(s) pass"
   fi
   echo "[fuzz] $t for ${SECONDS_EACH} s"
-  if ! ./build-fuzz/tests/fuzz/$t "$corpus" -max_total_time="$SECONDS_EACH" -max_len=65536 -timeout=10 \
+  seed=()
+  if [ -n "${GRIDCAR_FUZZ_SEED:-}" ]; then seed=(-seed="$GRIDCAR_FUZZ_SEED"); fi
+  if ! ./build-fuzz/tests/fuzz/$t "$corpus" "${seed[@]}" -max_total_time="$SECONDS_EACH" -max_len=65536 -timeout=10 \
       -rss_limit_mb=2048 -malloc_limit_mb=1024 -artifact_prefix=build-fuzz/crashes/$t- -print_final_stats=1 \
       > "$log" 2>&1; then
     tail -n 60 "$log"

@@ -4,7 +4,8 @@
 # UndefinedBehaviorSanitizer (./build-asan, leaks detected, no recovery from undefined
 # behaviour) and run the suite there too, except the wall-clock time-limit tests; then build the
 # libFuzzer targets with clang (./build-fuzz) and run each for 30 s on its seed corpus
-# (scripts/fuzz.sh; GRIDCAR_FUZZ_SECONDS changes the 30).
+# (scripts/fuzz.sh with seed 1, so every run replays the same mutations; GRIDCAR_FUZZ_SECONDS
+# changes the 30, GRIDCAR_FUZZ_SEED the seed).
 # GRIDCAR_SKIP_SANITIZERS=1 skips the second run, GRIDCAR_SKIP_FUZZ=1 the fuzzing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,7 +15,7 @@ ctest --test-dir build --output-on-failure -j2 --timeout 1200
 if [ "${GRIDCAR_SKIP_FUZZ:-0}" = "1" ]; then
   echo "[gridcar] fuzzing skipped (GRIDCAR_SKIP_FUZZ=1)"
 else
-  bash scripts/fuzz.sh "${GRIDCAR_FUZZ_SECONDS:-30}"
+  GRIDCAR_FUZZ_SEED=${GRIDCAR_FUZZ_SEED:-1} bash scripts/fuzz.sh "${GRIDCAR_FUZZ_SECONDS:-30}"
 fi
 if [ "${GRIDCAR_SKIP_SANITIZERS:-0}" = "1" ]; then
   echo "[gridcar] sanitizer run skipped (GRIDCAR_SKIP_SANITIZERS=1)"
