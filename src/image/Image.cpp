@@ -188,8 +188,10 @@ std::vector<std::uint8_t> withoutEmptyIdat(const std::vector<std::uint8_t> &png)
     return out;
 }
 
-/// A PNG whose compressed data cannot hold the pixels its header declares, or whose data
-/// inflates to more than they need, is refused before stb_image decodes it: its inflater reads
+/// A PNG with a chunk longer than the rest of the file, whose compressed data cannot hold the
+/// pixels its header declares, or whose data inflates to more than they need, is refused
+/// before stb_image decodes it (it allocates for a chunk's declared length, up to 1 GB, before
+/// reading it): its inflater reads
 /// zeros past the end of the data and grows its buffer (doubling up to 2 GB) for as long as
 /// the stream goes on, so a few dozen bytes could make it allocate a gigabyte (found by
 /// fuzz_image). Deflate expands at most 1032:1; the data is inflated here into a buffer of the
@@ -201,7 +203,10 @@ void checkPngInflation(const std::string &path, const std::vector<std::uint8_t> 
     for (std::size_t i = 8; i + 12 <= png.size();)
     {
         const std::size_t len = (std::size_t(png[i]) << 24) | (std::size_t(png[i + 1]) << 16) | (std::size_t(png[i + 2]) << 8) | png[i + 3];
-        if (len > png.size() - i - 12) break;  // stb_image reports the truncation
+        if (len > png.size() - i - 12)  // stb_image would allocate for it before noticing
+            throw MapLoadError(path, "truncated: chunk '" + std::string(reinterpret_cast<const char *>(&png[i + 4]), 4) +
+                                         "' declares " + std::to_string(len) + " bytes, the file has " +
+                                         std::to_string(png.size() - i - 12) + " after it");
         const std::uint8_t *d = &png[i + 8];
         if (std::memcmp(&png[i + 4], "IHDR", 4) == 0 && len >= 13 && w == 0)  // the first, as stb_image reads it
         {
