@@ -132,3 +132,5 @@ expect_bad_problem(p12 "map: ${longname}.yaml\n${Q1}\nplanners: [dijkstra]\n" "m
 expect_in("${ERR}" "cannot be looked up (File name too long)")
 # found by fuzz_problem_yaml: a query that is not a map was an internal error (yaml-cpp threw)
 expect_bad_problem(p13 "map: embedded\nqueries: [oops]\nplanners: [dijkstra]\n" "query 1: must be a map")
+# found by fuzz_problem_yaml: a cell index beyond int's range reached a cast (undefined behaviour)
+expect_bad_problem(p14 "map: embedded\nqueries: [ {start_cell: [3, 45555555555555], goal_cell: [0, 70]} ]\nplanners: [dijkstra]\n" "query 1: start_cell")

@@ -161,7 +161,8 @@ Pose2 readPose(const Problem &p, const YAML::Node &q, const std::string &key, co
     hasYaw = v.size() == 3;
     if (cell)
     {
-        if (a != std::floor(a) || b != std::floor(b) || !g.inBounds(int(a), int(b)))
+        // compared as doubles first: a cell index beyond int's range must not reach the cast
+        if (a != std::floor(a) || b != std::floor(b) || a < 0 || b < 0 || a >= g.width() || b >= g.height())
             bad(p, where + key + "_cell [" + std::to_string(a) + ", " + std::to_string(b) + "] is not a cell of the " +
                        std::to_string(g.width()) + " x " + std::to_string(g.height()) + " map");
         return {g.cellCenterX(int(a)), g.cellCenterY(int(b)), wrapYaw(yaw)};
