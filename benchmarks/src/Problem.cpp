@@ -13,6 +13,32 @@ namespace fs = std::filesystem;
 
 void bad(const Problem &p, const std::string &why) { throw InputError(p.file + ": " + why); }
 
+namespace
+{
+/// The `planners` list: names, or {name, label?, params?} with unique labels.
+void readPlanners(Problem &p, const YAML::Node &list)
+{
+    std::set<std::string> labels;
+    for (const auto &n : list)
+    {
+        PlannerSpec s;
+        if (n.IsScalar())
+            s.name = n.as<std::string>();
+        else
+        {
+            if (!n["name"]) bad(p, "a planner entry has no 'name'");
+            s.name = n["name"].as<std::string>();
+            if (n["params"])
+                for (const auto &kv : n["params"]) s.params.push_back({kv.first.as<std::string>(), kv.second.as<std::string>()});
+            if (n["label"]) s.label = n["label"].as<std::string>();
+        }
+        if (s.label.empty()) s.label = s.name;
+        if (!labels.insert(s.label).second) bad(p, "two planners are labelled '" + s.label + "': give one a 'label'");
+        p.planners.push_back(s);
+    }
+}
+}  // namespace
+
 Problem readProblem(const std::string &file, const std::string &sharedDir, bool &skip, std::string &skipWhy)
 {
     Problem p;
@@ -104,24 +130,7 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
         }
         if (!y["planners"] || !y["planners"].IsSequence() || y["planners"].size() == 0)
             bad(p, "'planners' must be a non-empty list of {name, label?, params?}");
-        std::set<std::string> labels;
-        for (const auto &n : y["planners"])
-        {
-            PlannerSpec s;
-            if (n.IsScalar())
-                s.name = n.as<std::string>();
-            else
-            {
-                if (!n["name"]) bad(p, "a planner entry has no 'name'");
-                s.name = n["name"].as<std::string>();
-                if (n["params"])
-                    for (const auto &kv : n["params"]) s.params.push_back({kv.first.as<std::string>(), kv.second.as<std::string>()});
-                if (n["label"]) s.label = n["label"].as<std::string>();
-            }
-            if (s.label.empty()) s.label = s.name;
-            if (!labels.insert(s.label).second) bad(p, "two planners are labelled '" + s.label + "': give one a 'label'");
-            p.planners.push_back(s);
-        }
+        readPlanners(p, y["planners"]);
     }
     catch (const YAML::Exception &e)
     {
