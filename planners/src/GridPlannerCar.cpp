@@ -93,7 +93,8 @@ bool GridPlanner::carGoal(CarLatticeQuery &q, ompl::base::PlannerStatus &bad)
             setPose(scratchB_, p);
             return pg->isSatisfied(scratchB_);
         };
-        const bool ok = pg->freeHeading() ? fitsAtSomeHeading(q.goal.x, q.goal.y) : poseValid(q.goal.x, q.goal.y, q.goal.yaw);
+        const CarCollision &c = car_->collision();
+        const bool ok = pg->freeHeading() ? c.fitsAtSomeHeading(q.goal.x, q.goal.y, 72) : c.poseFree(q.goal);
         return ok || invalid("the vehicle fits at no allowed heading at the goal position");
     }
     if (const auto *gs = dynamic_cast<const ompl::base::GoalState *>(goal))
@@ -101,7 +102,8 @@ bool GridPlanner::carGoal(CarLatticeQuery &q, ompl::base::PlannerStatus &bad)
         q.goal = toPose(gs->getState());
         q.goalYawTolerance = matchGoalHeading_ ? 0.0 : -1.0;
         if (!si_->satisfiesBounds(gs->getState())) return invalid("goal state is off the map");
-        const bool ok = matchGoalHeading_ ? poseValid(q.goal.x, q.goal.y, q.goal.yaw) : fitsAtSomeHeading(q.goal.x, q.goal.y);
+        const CarCollision &c = car_->collision();
+        const bool ok = matchGoalHeading_ ? c.poseFree(q.goal) : c.fitsAtSomeHeading(q.goal.x, q.goal.y, 72);
         return ok || invalid(matchGoalHeading_ ? "goal state is in collision" : "the vehicle fits at no heading at the goal");
     }
     const auto *gsr = dynamic_cast<const ompl::base::GoalSampleableRegion *>(goal);

@@ -55,8 +55,8 @@ ompl::base::PlannerTerminationCondition GridPlanner::withMemoryBound(const ompl:
     using Clock = std::chrono::steady_clock;
     auto next = std::make_shared<Clock::time_point>(Clock::now());
     const ompl::base::PlannerTerminationCondition memory([this, next] {
-        const auto now = Clock::now();
         if (memoryStopped_) return true;
+        const auto now = Clock::now();
         if (now < *next) return false;
         *next = now + std::chrono::milliseconds(10);
         const double mb = residentMegabytes();
@@ -101,14 +101,6 @@ VehicleParams GridPlanner::genericVehicle() const
     const double r = turningRadius();
     v.maxSteerDeg = std::atan(v.wheelbase / r) * 180.0 / M_PI;
     return v;
-}
-
-bool GridPlanner::fitsAtSomeHeading(double x, double y) const
-{
-    if (checker_) return checker_->fitsAtSomeHeading(x, y, 72);
-    for (int k = 0; k < 72; ++k)
-        if (poseValid(x, y, wrapYaw(k * 2.0 * M_PI / 72))) return true;
-    return false;
 }
 
 std::shared_ptr<GridSE2StateSpace> GridPlanner::ownGridSpace()

@@ -198,7 +198,6 @@ private:
     bool checkMoveUncached(int col, int row, int d) const;
     bool fillMoveCache(int col, int row, int d) const;
     bool poseValid(double x, double y, double yaw) const;
-    bool fitsAtSomeHeading(double x, double y) const;
     /// On an SE(2) space that is not gridcar's: the lattice geometry from the bounds and
     /// lattice_cell (GridPlannerSpace.cpp).
     std::shared_ptr<GridSE2StateSpace> ownGridSpace();

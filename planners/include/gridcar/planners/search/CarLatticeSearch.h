@@ -111,6 +111,8 @@ public:
     ~CarLatticeSearch();
 
     const CarLattice &lattice() const { return *lattice_; }
+    /// What the search asks about collisions (the start and goal checks use it too).
+    const CarCollision &collision() const { return *col_; }
     /// Largest open-space 2D-graph distance over primitive length (>= 1).
     double heuristicRatio() const { return ratio_; }
 
