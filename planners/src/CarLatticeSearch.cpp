@@ -2,7 +2,7 @@
 
 #include "gridcar/core/Angles.h"
 
-#include <ompl/base/spaces/DubinsStateSpace.h>
+#include "gridcar/curves/CarCurves.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,44 +16,13 @@ namespace
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }
 
-/// OMPL's Dubins curves at the lattice's turning radius, with two scratch states.
-struct CarLatticeSearch::Dubins
-{
-    explicit Dubins(double r) : space(r)
-    {
-        a = space.allocState();
-        b = space.allocState();
-        c = space.allocState();
-    }
-    ~Dubins()
-    {
-        space.freeState(a);
-        space.freeState(b);
-        space.freeState(c);
-    }
-    static void set(ompl::base::State *s, const Pose2 &p)
-    {
-        auto *st = s->as<ompl::base::SE2StateSpace::StateType>();
-        st->setXY(p.x, p.y);
-        st->setYaw(p.yaw);
-    }
-    /// OMPL 1.5.2 keeps interpolation along a computed DubinsPath protected: made public here
-    struct Space : ompl::base::DubinsStateSpace
-    {
-        using ompl::base::DubinsStateSpace::DubinsStateSpace;
-        using ompl::base::DubinsStateSpace::interpolate;
-    };
-    Space space;
-    ompl::base::State *a, *b, *c;
-};
-
 CarLatticeSearch::CarLatticeSearch(const FootprintChecker &checker, std::shared_ptr<const CarLattice> lattice)
   : CarLatticeSearch(std::make_shared<FootprintCollision>(checker), std::move(lattice))
 {
 }
 
 CarLatticeSearch::CarLatticeSearch(std::shared_ptr<CarCollision> collision, std::shared_ptr<const CarLattice> lattice)
-  : col_(std::move(collision)), lattice_(std::move(lattice)), dubins_(std::make_unique<Dubins>(lattice_->config().turnRadius))
+  : col_(std::move(collision)), lattice_(std::move(lattice))
 {
     ratio_ = measureRatio();
 }
@@ -215,33 +184,38 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         if (query_.goalYawTolerance > 0)
             for (double d : {-query_.goalYawTolerance, query_.goalYawTolerance}) yaws.push_back(wrapYaw(g.yaw + d));
     }
-    Dubins &D = *dubins_;
-    Dubins::set(D.a, from);
+    // gridcar's Dubins curves (OMPL 1.5.2's asserts on rounding errors and would abort)
     std::vector<std::pair<double, double>> cand;  // (length, yaw)
+    std::vector<CarCurve> curves;
+    std::vector<double> curveYaw;
     for (double y : yaws)
     {
-        Dubins::set(D.b, {g.x, g.y, y});
-        const double len = D.space.distance(D.a, D.b);
-        if (len <= e + 2 * M_PI * R) cand.push_back({len, y});
+        CarCurve c = dubinsCurve(from, {g.x, g.y, y}, R);
+        if (c.length <= e + 2 * M_PI * R)
+        {
+            cand.push_back({c.length, double(curves.size())});
+            curves.push_back(c);
+            curveYaw.push_back(y);
+        }
     }
     std::sort(cand.begin(), cand.end());
     if (cand.size() > (near ? 3u : 1u)) cand.resize(near ? 3u : 1u);
-    for (const auto &[len, y] : cand)
+    for (const auto &[len, index] : cand)
     {
         ++shotsTried_;
-        Dubins::set(D.b, {g.x, g.y, y});
-        const auto path = D.space.dubins(D.a, D.b);
+        const CarCurve &path = curves[std::size_t(index)];
+        const double y = curveYaw[std::size_t(index)];
         const int n = std::max(1, int(std::ceil(len * (1.0 + col_->reach() / R) / lattice_->config().spacing)));
         auto poseAt = [&](int i) {
-            D.space.interpolate(D.a, path, double(i) / n, D.c);
-            const auto *st = D.c->as<ompl::base::SE2StateSpace::StateType>();
-            return Pose2{st->getX(), st->getY(), wrapYaw(st->getYaw())};
+            Pose2 p = curvePose(from, path, len * i / n);
+            p.yaw = wrapYaw(p.yaw);
+            return p;
         };
         const bool free = curveFree(from, n, poseAt);
         if (!free) continue;
         double turn = 0;
-        for (int seg = 0; seg < 3; ++seg)
-            if (path.type_[seg] != ompl::base::DubinsStateSpace::DUBINS_STRAIGHT) turn += path.length_[seg];
+        for (int seg = 0; seg < path.count; ++seg)
+            if (path.segments[std::size_t(seg)].steer != Steer::Straight) turn += path.segments[std::size_t(seg)].length / R;
         std::vector<Pose2> poses;
         poses.reserve(std::size_t(n));
         for (int i = 1; i <= n; ++i) poses.push_back(poseAt(i));

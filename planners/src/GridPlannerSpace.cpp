@@ -5,11 +5,10 @@
 #include "gridcar/planners/GridPlanner.h"
 
 #include "gridcar/core/Memory.h"
+#include "gridcar/spaces/CurveSpaces.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Console.h>
-#include <ompl/base/spaces/DubinsStateSpace.h>
-#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
 #include <algorithm>
 #include <chrono>
@@ -20,25 +19,6 @@
 
 namespace gridcar
 {
-namespace
-{
-/// The radius of OMPL's Dubins / Reeds-Shepp space (kept protected in OMPL 1.5.2): the metric
-/// is the radius times the unit-radius path length, so their ratio on any curve is the radius.
-double spaceTurningRadius(const ompl::base::StateSpacePtr &space)
-{
-    ompl::base::ScopedState<ompl::base::SE2StateSpace> a(space), b(space);
-    a->setXY(0.0, 0.0);
-    a->setYaw(0.0);
-    b->setXY(10.0, 3.0);
-    b->setYaw(1.0);
-    if (auto *d = dynamic_cast<const ompl::base::DubinsStateSpace *>(space.get()))
-        return d->distance(a.get(), b.get()) / d->dubins(a.get(), b.get()).length();
-    if (auto *r = dynamic_cast<const ompl::base::ReedsSheppStateSpace *>(space.get()))
-        return r->distance(a.get(), b.get()) / r->reedsShepp(a.get(), b.get()).length();
-    return 0.0;
-}
-}  // namespace
-
 void GridPlanner::setMaxMemoryMb(double mb)
 {
     if (!std::isfinite(mb) || mb < 0.0 || mb > 1e7)
@@ -90,7 +70,7 @@ double GridPlanner::turningRadius() const
     // never tighter than gridcar's vehicle can drive
     if (checker_) return std::max(turningRadius_, checker_->vehicle().minTurningRadius());
     if (turningRadius_ > 0) return turningRadius_;
-    const double r = spaceTurningRadius(si_->getStateSpace());
+    const double r = carSpaceTurningRadius(*si_->getStateSpace());
     return r > 0 ? r : VehicleParams{}.minTurningRadius();
 }
 

@@ -4,10 +4,10 @@
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/planners/SmoothedPlanner.h"
+#include "gridcar/spaces/CurveSpaces.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/PlannerData.h>
-#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 
 #include <algorithm>
@@ -70,45 +70,6 @@ double progressValue(const ompl::base::Planner &planner, const std::string &prop
     return it == props.end() ? 0.0 : std::strtod(it->second().c_str(), nullptr);
 }
 
-namespace
-{
-/// The poses along a Reeds-Shepp path's curves, at most @p step apart, every segment end (so
-/// every cusp) included exactly.
-std::vector<Pose2> reedsSheppPoses(const ompl::base::ReedsSheppStateSpace &rs, const ompl::geometric::PathGeometric &path,
-                                   double step)
-{
-    std::vector<Pose2> out;
-    if (path.getStateCount() == 0) return out;
-    out.push_back(toPose(path.getState(0)));
-    ompl::base::State *tmp = rs.allocState();
-    for (std::size_t i = 1; i < path.getStateCount(); ++i)
-    {
-        const ompl::base::State *a = path.getState(i - 1), *b = path.getState(i);
-        auto curve = rs.reedsShepp(a, b);
-        const double unit = curve.length(), metres = rs.distance(a, b);
-        if (!(unit > 0))
-            continue;
-        std::vector<double> ts;
-        const int n = std::max(1, int(std::ceil(metres / step)));
-        for (int k = 1; k <= n; ++k) ts.push_back(double(k) / n);
-        double acc = 0;
-        for (double l : curve.length_)
-        {
-            acc += std::abs(l);
-            if (acc < unit) ts.push_back(acc / unit);
-        }
-        std::sort(ts.begin(), ts.end());
-        bool first = true;
-        for (double t : ts)
-        {
-            rs.interpolate(a, b, t, first, curve, tmp);
-            out.push_back(toPose(tmp));
-        }
-    }
-    rs.freeState(tmp);
-    return out;
-}
-}  // namespace
 
 std::vector<Pose2> solutionPoses(const GridSetup &setup, const ompl::base::Planner &planner)
 {
@@ -121,8 +82,7 @@ std::vector<Pose2> solutionPoses(const GridSetup &setup, const ompl::base::Plann
                       (wrapper && wrapper->method() == SmoothedPlanner::Method::PaperI);
     if (setup.kind == SpaceKind::SE2 || ours) return toPoses(path);
     const auto &space = setup.ss->getStateSpace();
-    if (const auto *rs = dynamic_cast<const ompl::base::ReedsSheppStateSpace *>(space.get()))
-        return reedsSheppPoses(*rs, path, space->getLongestValidSegmentLength());
+    if (carSpaceTurningRadius(*space) > 0) return carSpacePoses(*space, path, space->getLongestValidSegmentLength());
     path.interpolate();
     return toPoses(path);
 }

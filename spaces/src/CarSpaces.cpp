@@ -1,11 +1,10 @@
 #include "gridcar/spaces/CarSpaces.h"
 #include "gridcar/core/Errors.h"
 
+#include "gridcar/spaces/CurveSpaces.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/SpaceInformation.h>
-#include <ompl/base/spaces/DubinsStateSpace.h>
-#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
 #include <algorithm>
 #include <cmath>
@@ -45,27 +44,30 @@ int CurveMotionValidator::firstBlocked(const ompl::base::State *s1, const ompl::
                                        bool endFirst) const
 {
     const auto &space = si_->getStateSpace();
-    const double len = space->distance(s1, s2);  // the curve's length
+    // the car space's curve from gridcar's curve code, computed once and sampled
+    CarCurve curve;
+    const bool car = carSpaceCurve(*space, s1, s2, curve);
+    const double len = car ? curve.length : space->distance(s1, s2);
     n = std::max(1, int(std::ceil(len * (1.0 + checker_->reach() / radius_) / step_)));
     if (endFirst && !checker_->isValid(toPose(s2))) return n;  // the cheapest rejection first
     ompl::base::State *tmp = si_->allocState();
-    // OMPL's interpolation that computes the curve once and reuses it for every t
-    const auto *rs = dynamic_cast<const ompl::base::ReedsSheppStateSpace *>(space.get());
-    const auto *db = dynamic_cast<const ompl::base::DubinsStateSpace *>(space.get());
-    bool first = true;
-    ompl::base::ReedsSheppStateSpace::ReedsSheppPath rsPath;
-    ompl::base::DubinsStateSpace::DubinsPath dbPath;
+    const Pose2 from = toPose(s1);
     int blocked = -1;
     for (int i = 1; i <= n && blocked < 0; ++i)
     {
         const double t = double(i) / n;
-        if (rs) rs->interpolate(s1, s2, t, first, rsPath, tmp);
-        else if (db) db->interpolate(s1, s2, t, first, dbPath, tmp);
-        else space->interpolate(s1, s2, t, tmp);
+        Pose2 p;
+        if (i == n) p = toPose(s2);
+        else if (car) p = curvePose(from, curve, t * len);
+        else
+        {
+            space->interpolate(s1, s2, t, tmp);
+            p = toPose(tmp);
+        }
         // the end state exactly (a state of the path, already valid by the checker); the poses
         // between with the rectangle grown by half the step: no body point moves farther than
         // the step between two poses, so the swept motion is certified, not only its samples
-        if (!(i == n ? checker_->isValid(toPose(tmp)) : checker_->isValidInflated(toPose(tmp), 0.5 * step_))) blocked = i;
+        if (!(i == n ? checker_->isValid(p) : checker_->isValidInflated(p, 0.5 * step_))) blocked = i;
     }
     si_->freeState(tmp);
     return blocked;

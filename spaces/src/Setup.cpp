@@ -1,10 +1,9 @@
 #include "gridcar/spaces/Setup.h"
 
+#include "gridcar/spaces/CurveSpaces.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/ScopedState.h>
-#include <ompl/base/spaces/DubinsStateSpace.h>
-#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -30,8 +29,9 @@ GridSetup makeGridSetup(std::shared_ptr<const OccupancyGrid> grid, const Vehicle
             throw std::invalid_argument("a " + spaceKindName(s.kind) + " space needs a vehicle with a turning radius (" +
                                         vehicle.name + " has none)");
         std::shared_ptr<ompl::base::SE2StateSpace> car;
-        if (s.kind == SpaceKind::Dubins) car = std::make_shared<ompl::base::DubinsStateSpace>(radius);
-        else car = std::make_shared<ompl::base::ReedsSheppStateSpace>(radius);
+        // OMPL's car spaces with gridcar's curve code (OMPL 1.5.2's Dubins code can abort)
+        if (s.kind == SpaceKind::Dubins) car = std::make_shared<DubinsSpace>(radius);
+        else car = std::make_shared<ReedsSheppSpace>(radius);
         car->setBounds(s.space->getBounds());
         planSpace = car;
     }

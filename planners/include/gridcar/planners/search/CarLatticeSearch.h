@@ -166,8 +166,6 @@ private:
     std::vector<Pose2> shot_;
     double shotCost_{0};
     int shotsTried_{0};
-    struct Dubins;
-    std::unique_ptr<Dubins> dubins_;
 };
 
 }  // namespace gridcar
