@@ -180,7 +180,7 @@ struct RandomGridExpander
 };
 }  // namespace
 
-// The dense space searches with the decrease-key open list, the hash space with lazy deletion:
+// The dense space searches with the decrease-key open list, the growing space with lazy deletion:
 // both must expand the same states in the same order and agree on every g and parent.
 TEST(SearchCore, DecreaseKeyAndLazyDeletionSearchesAreIdentical)
 {
@@ -195,7 +195,7 @@ TEST(SearchCore, DecreaseKeyAndLazyDeletionSearchesAreIdentical)
         ex.blocked[start] = ex.blocked[goal] = 0;
         ex.goal = goal;
         SearchSpace dense(std::size_t(ex.W) * ex.H);
-        HashSearchSpace hash;
+        GrowingSearchSpace hash;
         const auto never = [] { return false; };
         const SearchResult a = astar(dense, {start}, ex, never);
         const SearchResult b = astar(hash, {start}, ex, never);

@@ -5,6 +5,7 @@
 
 #include "gridcar/core/Angles.h"
 
+#include <atomic>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -26,7 +27,7 @@ struct CarExpander
 
     Pose2 poseOf(std::uint32_t s) const
     {
-        const auto k = S.unpack(S.keys_[s]);
+        const auto k = S.unpack(S.states_.key(s));
         return S.nodePose(k.i, k.j, k.h);
     }
     double hNode(int i, int j) const
@@ -56,7 +57,7 @@ struct CarExpander
     }
     double heuristic(std::uint32_t s) const
     {
-        const auto k = S.unpack(S.keys_[s]);
+        const auto k = S.unpack(S.states_.key(s));
         return hNode(k.i, k.j) + turnBound(k.i, k.j, k.h);
     }
     bool isGoal(std::uint32_t s)
@@ -68,7 +69,7 @@ struct CarExpander
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit)
     {
-        const auto k = S.unpack(S.keys_[s]);
+        const auto k = S.unpack(S.states_.key(s));
         const Pose2 from = S.nodePose(k.i, k.j, k.h);
         const auto &prims = S.lattice_->primitives(k.h);
         for (std::size_t p = 0; p < prims.size(); ++p)
@@ -105,14 +106,14 @@ std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
     std::vector<std::uint32_t> chain;
     for (std::uint32_t s = end; s != SearchSpace::kNoParent; s = space_.parent(s)) chain.push_back(s);
     std::reverse(chain.begin(), chain.end());
-    const auto k0 = unpack(keys_[chain.front()]);
+    const auto k0 = unpack(states_.key(chain.front()));
     Pose2 start = nodePose(k0.i, k0.j, k0.h);
     start.x = query_.start.x;
     start.y = query_.start.y;
     std::vector<Pose2> path{start};
     for (std::size_t n = 1; n < chain.size(); ++n)
     {
-        const auto kp = unpack(keys_[chain[n - 1]]);
+        const auto kp = unpack(states_.key(chain[n - 1]));
         const LatticePrimitive &p = lattice_->primitives(kp.h)[std::size_t(prim_[chain[n]])];
         std::vector<Pose2> w;
         worldSamples(kp.i, kp.j, p, w);
@@ -127,7 +128,7 @@ std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
 }
 
 CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCostModel &cost,
-                                       const std::function<bool()> &cancelled, std::uint64_t *progress)
+                                       const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
 {
     setFrame(q);
     CarLatticeResult out;
@@ -169,8 +170,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     h2d_->reset(i0_, j0_, ni_, nj_, seeds, 0, 0);
     use2d_ = q.aim;
     if (use2d_ && h2d_->distance(0, 0) == kInf) use2d_ = false;
-    ids_.clear();
-    keys_.clear();
+    states_.clear();
     prim_.clear();
     shotFrom_ = SearchSpace::kNoParent;
     shot_.clear();
@@ -192,7 +192,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     }
     out.outcome = res.outcome;
     out.expanded = res.expanded;
-    out.states = keys_.size();
+    out.states = states_.size();
     out.heuristicNodes = h2d_->closedCount();
     out.shotsTried = shotsTried_;
     const std::uint32_t end = res.outcome == SearchOutcome::Found ? res.goal : res.closest;
@@ -214,14 +214,14 @@ void CarLatticeSearch::forEachExpanded(const std::function<void(const Pose2 &, c
 {
     space_.forEach([&](std::uint32_t s, bool closed) {
         if (!closed) return;
-        const auto k = unpack(keys_[s]);
+        const auto k = unpack(states_.key(s));
         const Pose2 node = nodePose(k.i, k.j, k.h);
         const std::uint32_t p = space_.parent(s);
         if (p == SearchSpace::kNoParent)
             fn(node, node);
         else
         {
-            const auto kp = unpack(keys_[p]);
+            const auto kp = unpack(states_.key(p));
             fn(node, nodePose(kp.i, kp.j, kp.h));
         }
     });

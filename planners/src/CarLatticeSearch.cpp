@@ -85,12 +85,8 @@ CarLatticeSearch::Key CarLatticeSearch::unpack(std::uint64_t k) const
 std::uint32_t CarLatticeSearch::intern(int i, int j, int h)
 {
     const std::uint64_t k = pack(i, j, h);
-    auto it = ids_.find(k);
-    if (it != ids_.end()) return it->second;
-    const auto id = std::uint32_t(keys_.size());
-    ids_.emplace(k, id);
-    keys_.push_back(k);
-    prim_.push_back(-1);
+    const std::uint32_t id = states_.intern(k);
+    if (id == prim_.size()) prim_.push_back(-1);  // a new state
     return id;
 }
 
@@ -157,7 +153,7 @@ void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
 
 bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)
 {
-    const auto k = unpack(keys_[s]);
+    const auto k = unpack(states_.key(s));
     const Pose2 from = nodePose(k.i, k.j, k.h);
     const Pose2 &g = query_.goal;
     const double e = std::hypot(g.x - from.x, g.y - from.y);

@@ -34,7 +34,7 @@ GridPlanner::GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::s
     declareParam<bool>("match_goal_heading", this, &GridPlanner::setMatchGoalHeading,
                        &GridPlanner::matchGoalHeading, "0,1");
     addPlannerProgressProperty("expanded nodes INTEGER",
-                               [this] { return std::to_string(progressExpanded_); });
+                               [this] { return std::to_string(progressExpanded_.load()); });
     // the planner's own cost of its last solution and the seconds its search loop took, to
     // full precision (PlanQuery and the Moving AI runner read them)
     auto exact = [](double v) {
@@ -55,13 +55,32 @@ GridPlanner::~GridPlanner()
 
 void GridPlanner::setAllowCornerCutting(bool v)
 {
-    if (v != allowCornerCutting_) std::fill(moveCache_.begin(), moveCache_.end(), 0);
+    if (v != allowCornerCutting_) moveCache_.zero();
     allowCornerCutting_ = v;
+}
+
+bool GridPlanner::builtOnCurrentWorld() const
+{
+    return builtOnChecker_ == si_->getStateValidityChecker() && builtOnMotion_ == si_->getMotionValidator();
+}
+
+const ompl::base::State *GridPlanner::currentStart()
+{
+    pis_.restart();
+    return pis_.nextStart();
 }
 
 void GridPlanner::setup()
 {
     ompl::base::Planner::setup();
+    if (!builtOnCurrentWorld())
+    {
+        // a new map (validity checker) or motion validator: nothing built on the old one stays
+        car_.reset();
+        moveCache_.zero();
+        builtOnChecker_ = si_->getStateValidityChecker();
+        builtOnMotion_ = si_->getMotionValidator();
+    }
     if (!dynamic_cast<const ompl::base::SE2StateSpace *>(si_->getStateSpace().get()))
         throw ompl::Exception(getName(), "needs a state space derived from ompl::base::SE2StateSpace (plain SE2, "
                                          "Dubins, Reeds-Shepp or gridcar::GridSE2StateSpace)");
@@ -99,12 +118,11 @@ void GridPlanner::setup()
     {
         tooBig_ = "the grid lattice of " + std::to_string(cells) + " cells needs " + std::to_string(long(mb)) +
                   " MB of move cache and search records, more than max_memory_mb " + std::to_string(long(maxMemoryMb_));
-        moveCache_.clear();
-        moveCache_.shrink_to_fit();
+        moveCache_.release();
         search_.reset();
         return;
     }
-    if (moveCache_.size() != cells * 8) moveCache_.assign(cells * 8, 0);
+    if (moveCache_.size() != cells * 8) moveCache_.assignZeros(cells * 8);
     if (usesDenseSearch() && (!search_ || search_->size() != stateCount()))
         search_ = std::make_unique<SearchSpace>(stateCount());
 }
@@ -188,6 +206,11 @@ bool GridPlanner::isGoal(int col, int row, int dir) const
 ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminationCondition &timeLimit)
 {
     using ompl::base::PlannerStatus;
+    if (!builtOnCurrentWorld())
+    {
+        OMPL_INFORM("%s: the validity checker or motion validator changed since setup(): setting up again", getName().c_str());
+        setup_ = false;
+    }
     checkValidity();
     freeDataStates();  // PlannerData states are cached by search state, which a new search renumbers
     const ompl::base::PlannerTerminationCondition ptc = withMemoryBound(timeLimit);
@@ -200,7 +223,7 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     lastPath_.clear();
     lastExpanded_ = 0;
     progressExpanded_ = 0;
-    const ompl::base::State *start = pis_.nextStart();
+    const ompl::base::State *start = currentStart();
     if (!start)
     {
         OMPL_ERROR("%s: no valid start state (off the map or in collision)", getName().c_str());
@@ -272,10 +295,19 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     // an approximate path stopped by the time limit is returned as it is: smoothing it would
     // run past the limit
     const bool smooth = exact || !ptc.eval();
-    if (smooth && postProcess(*path) && exact && checker_)
+    notExactBecause_.clear();
+    const bool replaced = smooth && postProcess(*path, ptc);
+    if (exact && !notExactBecause_.empty())
+    {
+        exactAndDrivable = false;
+        lastStopReason_ = notExactBecause_;
+    }
+    else if (replaced && exact && checker_)
     {
         // a smoothed path is a drivable solution only if the independent check says so
-        const Drivability d = checkDrivable(toPoses(*path), *checker_);
+        DrivabilityOptions check;
+        check.cancelled = [&ptc] { return ptc.eval(); };
+        const Drivability d = checkDrivable(toPoses(*path), *checker_, check);
         if (!d.drivable)
         {
             exactAndDrivable = false;

@@ -138,7 +138,7 @@ bool GridPlanner::carGoal(CarLatticeQuery &q, ompl::base::PlannerStatus &bad)
 ompl::base::PlannerStatus GridPlanner::solveCarLattice(const ompl::base::PlannerTerminationCondition &ptc)
 {
     using ompl::base::PlannerStatus;
-    const ompl::base::State *start = pis_.nextStart();
+    const ompl::base::State *start = currentStart();
     if (!start)
     {
         OMPL_ERROR("%s: no valid start state (off the map or in collision)", getName().c_str());

@@ -91,26 +91,15 @@ void ImprovedAStar::setup()
 void ImprovedAStar::clear()
 {
     GridPlanner::clear();
-    hash_.reset();
-    ids_.clear();
-    keys_.clear();
+    records_.reset();
+    states_.clear();
     lastSmoothing_ = SmoothingResult();
     latticePath_.clear();
 }
 
-std::size_t ImprovedAStar::stateCount() const { return keys_.size(); }
+std::size_t ImprovedAStar::stateCount() const { return states_.size(); }
 
-std::uint32_t ImprovedAStar::intern(std::uint64_t key) const
-{
-    auto it = ids_.find(key);
-    if (it != ids_.end()) return it->second;
-    if (keys_.size() >= std::size_t(SearchSpace::kNoParent) - 1)
-        throw ompl::Exception("improved-astar", "more than 2^32 - 2 search states");
-    const auto id = std::uint32_t(keys_.size());
-    ids_.emplace(key, id);
-    keys_.push_back(key);
-    return id;
-}
+std::uint32_t ImprovedAStar::intern(std::uint64_t key) const { return states_.intern(key); }
 
 ImprovedAStar::Key ImprovedAStar::keyCodec() const { return {std::uint64_t(width_), std::uint64_t(runStates_)}; }
 
@@ -142,8 +131,7 @@ double ImprovedAStar::heuristicAt(int col, int row, int goalCol, int goalRow) co
 
 std::vector<std::uint32_t> ImprovedAStar::startStates(const Query &q) const
 {
-    ids_.clear();
-    keys_.clear();
+    states_.clear();
     const Key key = keyCodec();
     std::vector<std::uint32_t> out;
     for (int d = 0; d < 8; ++d)
@@ -153,7 +141,7 @@ std::vector<std::uint32_t> ImprovedAStar::startStates(const Query &q) const
 
 void ImprovedAStar::forEachClosed(const std::function<void(std::uint32_t)> &fn) const
 {
-    hash_.forEach([&](std::uint32_t s, bool closed) {
+    records_.forEach([&](std::uint32_t s, bool closed) {
         if (closed) fn(s);
     });
 }
@@ -234,10 +222,10 @@ SearchResult ImprovedAStar::runSearch(const Query &q, const std::vector<std::uin
     if (paperMode_)
     {
         PaperExpander ex{{this, q, keyCodec(), runStates_}};
-        return astar(hash_, starts, ex, cancelled, &progressExpanded_, /*reopen=*/false);
+        return astar(records_, starts, ex, cancelled, &progressExpanded_, /*reopen=*/false);
     }
     ImprovedExpander ex{this, q, keyCodec(), runStates_};
-    return astar(hash_, starts, ex, cancelled, &progressExpanded_);
+    return astar(records_, starts, ex, cancelled, &progressExpanded_);
 }
 
 namespace
@@ -306,7 +294,7 @@ std::unique_ptr<LatticeCostModel> ImprovedAStar::carCost() const
     return std::make_unique<IntegralCost>(*this);
 }
 
-bool ImprovedAStar::postProcess(ompl::geometric::PathGeometric &path)
+bool ImprovedAStar::postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc)
 {
     if (!smooth_ || path.getStateCount() < 3)
     {
@@ -320,7 +308,14 @@ bool ImprovedAStar::postProcess(ompl::geometric::PathGeometric &path)
         latticePath_ = toPoses(path);
         return false;
     }
-    lastSmoothing_ = smoothSolutionPath(si_, *checker_, path, latticePath_);
+    lastSmoothing_ = smoothSolutionPath(si_, *checker_, path, latticePath_, ptc);
+    if (lastSmoothing_.cancelled)
+    {
+        OMPL_WARN("%s: smoothing stopped by the termination condition; the path is the search's, unsmoothed", getName().c_str());
+        lastSmoothing_ = SmoothingResult();
+        markNotExact("the smoothing was stopped by the termination condition: the path is the search's, unsmoothed");
+        return false;
+    }
     return true;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <stdexcept>
 
 namespace gridcar
@@ -55,10 +56,16 @@ void ObstacleHeuristic::reset(int i0, int j0, int ni, int nj, const std::vector<
     ni_ = ni;
     nj_ = nj;
     const std::size_t need = std::size_t(ni) * std::size_t(nj);
-    if (nodes_.size() < need) nodes_.resize(need, Node{0.0, -1.0f, 0, 0, 0, 0});
+    if (nodeCount_ < need)
+    {
+        nodes_.reset(static_cast<Node *>(std::calloc(need, sizeof(Node))));
+        if (!nodes_) throw std::bad_alloc();
+        nodeCount_ = need;
+        epoch_ = 0;
+    }
     if (++epoch_ == 0)  // wrapped: every stamp is stale again
     {
-        for (Node &x : nodes_) x.stamp = 0;
+        for (std::size_t n = 0; n < nodeCount_; ++n) nodes_[n].stamp = 0;
         epoch_ = 1;
     }
     heap_.clear();

@@ -13,11 +13,14 @@
 namespace gridcar
 {
 SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, const FootprintChecker &checker,
-                                   ompl::geometric::PathGeometric &path, std::vector<Pose2> &raw)
+                                   ompl::geometric::PathGeometric &path, std::vector<Pose2> &raw,
+                                   const ompl::base::PlannerTerminationCondition &ptc)
 {
     raw = toPoses(path);
-    SmoothingResult res = smoothPath(raw, checker);
-    path = toPath(si, res.path);
+    SmoothingParams params;
+    params.cancelled = [&ptc] { return ptc.eval(); };
+    SmoothingResult res = smoothPath(raw, checker, params);
+    if (!res.cancelled) path = toPath(si, res.path);
     return res;
 }
 
@@ -81,14 +84,30 @@ ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTermin
     if (const auto *g = dynamic_cast<const GridPlanner *>(inner_.get()); g && g->carSearch()) return st;
     auto vc = std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker());
     auto out = std::make_shared<ompl::geometric::PathGeometric>(*path);
-    last_ = smoothSolutionPath(si_, vc->checker(), *out, raw_);
+    last_ = smoothSolutionPath(si_, vc->checker(), *out, raw_, ptc);
+    if (last_.cancelled)
+    {
+        // stopped by the termination condition: the inner planner's path, not smoothed, and so
+        // not the exact solution asked for
+        OMPL_WARN("%s: smoothing stopped by the termination condition; the path is not smoothed", getName().c_str());
+        last_ = SmoothingResult();
+        last_.notDrivable = "the smoothing was stopped by the termination condition";
+        raw_.clear();
+        const double difference = pdef->getSolutionDifference();
+        pdef->clearSolutionPaths();
+        pdef->addSolutionPath(out, true, difference, getName());
+        if (st == ompl::base::PlannerStatus::EXACT_SOLUTION) return ompl::base::PlannerStatus::APPROXIMATE_SOLUTION;
+        return st;
+    }
     bool approximate = pdef->hasApproximateSolution();
     const double difference = pdef->getSolutionDifference();
     ompl::base::PlannerStatus result = st;
     if (st == ompl::base::PlannerStatus::EXACT_SOLUTION)
     {
         // an exact solution stays exact only if the smoothed path passes the independent check
-        const Drivability d = checkDrivable(last_.path, vc->checker());
+        DrivabilityOptions check;
+        check.cancelled = [&ptc] { return ptc.eval(); };
+        const Drivability d = checkDrivable(last_.path, vc->checker(), check);
         if (!d.drivable)
         {
             last_.notDrivable = d.reason;

@@ -13,12 +13,14 @@ namespace
 {
 /// The body along one piece (yaw of each segment, turned round when driven backwards) and its
 /// curvature; @p s0 is the arc length where the piece starts.
-void checkPiece(const std::vector<Pose2> &pts, bool backward, double s0, const FootprintChecker &checker, double step,
-                Drivability &d, double &worstDeviation)
+/// Returns false when options.cancelled stopped it.
+bool checkPiece(const std::vector<Pose2> &pts, bool backward, double s0, const FootprintChecker &checker,
+                const DrivabilityOptions &options, double step, Drivability &d, double &worstDeviation)
 {
     double s = s0;
     for (std::size_t i = 1; i < pts.size() && d.firstCollision < 0; ++i)
     {
+        if ((i & 63) == 0 && options.cancelled && options.cancelled()) return false;
         const Pose2 &a = pts[i - 1], &b = pts[i];
         const double len = std::hypot(b.x - a.x, b.y - a.y);
         const double yaw = std::atan2(b.y - a.y, b.x - a.x) + (backward ? M_PI : 0.0);
@@ -48,6 +50,7 @@ void checkPiece(const std::vector<Pose2> &pts, bool backward, double s0, const F
         if (std::isfinite(kmax) && theta > 1e-9)
             worstDeviation = std::max(worstDeviation, theta >= M_PI - 1e-9 ? HUGE_VAL : (1.0 / std::cos(theta / 2) - 1.0) / kmax);
     }
+    return true;
 }
 }  // namespace
 
@@ -71,20 +74,27 @@ Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker
     }
     const double step = options.step > 0 ? options.step : 0.02;
     double worstDeviation = 0.0;
+    bool finished = true;
     if (!options.reversing)
-        checkPiece(pts, false, 0.0, checker, step, d, worstDeviation);
+        finished = checkPiece(pts, false, 0.0, checker, options, step, d, worstDeviation);
     else
     {
         double s0 = 0.0;
         for (const PathPiece &piece : splitAtCusps(pts))
         {
-            checkPiece(piece.poses, piece.backward, s0, checker, step, d, worstDeviation);
+            finished = finished && checkPiece(piece.poses, piece.backward, s0, checker, options, step, d, worstDeviation);
             for (std::size_t i = 1; i < piece.poses.size(); ++i)
                 s0 += std::hypot(piece.poses[i].x - piece.poses[i - 1].x, piece.poses[i].y - piece.poses[i - 1].y);
         }
     }
     const double kmax = checker.vehicle().maxCurvature();
     char buf[160];
+    if (!finished)
+    {
+        d.drivable = false;
+        d.reason = "the check was stopped by the termination condition before it finished";
+        return d;
+    }
     if (d.firstCollision >= 0)
     {
         std::snprintf(buf, sizeof buf, "the body hits an obstacle %.2f m along the path", d.firstCollision);

@@ -104,6 +104,15 @@ double maxMengerCurvature(const std::vector<Pose2> &path)
 
 namespace
 {
+/// Thrown by stopIfCancelled() and caught in smoothPath(): out of the nested loops at once.
+struct SmoothingCancelled
+{
+};
+void stopIfCancelled(const SmoothingParams &prm)
+{
+    if (prm.cancelled && prm.cancelled()) throw SmoothingCancelled();
+}
+
 /// Adjustment and smoothing of one set of turning points (steps 2 and 3 of smoothPath()).
 void adjustAndSmooth(SmoothingResult &r, std::vector<Pose2> pts, const FootprintChecker &checker,
                      const SmoothingParams &prm, double kmax, double step, const Pose2 &last)
@@ -123,6 +132,7 @@ void adjustAndSmooth(SmoothingResult &r, std::vector<Pose2> pts, const Footprint
             bool moved = false;
             for (std::size_t i = 1; i + 1 < n; ++i)
             {
+                stopIfCancelled(prm);
                 double k = cornerK(i, pts[i]);
                 while (k >= kmax && moves[i] < prm.maxAdjustSteps)
                 {
@@ -159,6 +169,7 @@ void adjustAndSmooth(SmoothingResult &r, std::vector<Pose2> pts, const Footprint
     out.push_back({pts[0].x, pts[0].y, n > 1 ? heading(pts[0], pts[1]) : pts[0].yaw});
     for (std::size_t i = 1; i + 1 < n; ++i)
     {
+        stopIfCancelled(prm);
         CornerReport cr;
         cr.point = pts[i];
         cr.turnDeg = std::abs(wrapAngle(heading(pts[i], pts[i + 1]) - heading(pts[i - 1], pts[i]))) * 180.0 / M_PI;
@@ -197,7 +208,31 @@ void adjustAndSmooth(SmoothingResult &r, std::vector<Pose2> pts, const Footprint
 }
 }  // namespace
 
+namespace
+{
+SmoothingResult smoothOrThrow(const std::vector<Pose2> &path, const FootprintChecker &checker, const SmoothingParams &prm);
+}
+
 SmoothingResult smoothPath(const std::vector<Pose2> &path, const FootprintChecker &checker, const SmoothingParams &prm)
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    try
+    {
+        return smoothOrThrow(path, checker, prm);
+    }
+    catch (const SmoothingCancelled &)
+    {
+        SmoothingResult r;
+        r.path = path;
+        r.cancelled = true;
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return r;
+    }
+}
+
+namespace
+{
+SmoothingResult smoothOrThrow(const std::vector<Pose2> &path, const FootprintChecker &checker, const SmoothingParams &prm)
 {
     const auto t0 = std::chrono::steady_clock::now();
     SmoothingResult r;
@@ -215,7 +250,11 @@ SmoothingResult smoothPath(const std::vector<Pose2> &path, const FootprintChecke
         while (i + 1 < lattice.size())
         {
             std::size_t j = i + 1;  // the next point is always reachable (the input leg)
-            while (j + 1 < lattice.size() && legValid(checker, lattice[i], lattice[j + 1])) ++j;
+            while (j + 1 < lattice.size() && legValid(checker, lattice[i], lattice[j + 1]))
+            {
+                ++j;
+                stopIfCancelled(prm);
+            }
             kept.push_back(j);
             i = j;
         }
@@ -252,5 +291,7 @@ SmoothingResult smoothPath(const std::vector<Pose2> &path, const FootprintChecke
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
 }
+
+}  // namespace
 
 }  // namespace gridcar

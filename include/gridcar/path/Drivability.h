@@ -5,6 +5,7 @@
 
 #include "gridcar/collision/FootprintChecker.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct DrivabilityOptions
     /// A Reeds-Shepp path: split at its cusps (splitAtCusps()), a piece driven backwards
     /// checked with the body turned round, the reversal itself no curvature.
     bool reversing{false};
+    /// Polled every 64 poses (a planner's termination condition): when it returns true the
+    /// check stops with drivable = false and the reason that it was not finished.
+    std::function<bool()> cancelled;
 };
 
 /// The verdict of checkDrivable().

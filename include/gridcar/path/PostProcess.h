@@ -6,6 +6,7 @@
 #include "gridcar/collision/FootprintChecker.h"
 
 #include <string>
+#include <functional>
 #include <vector>
 
 namespace gridcar
@@ -19,6 +20,9 @@ struct SmoothingParams
     int maxAdjustSteps{40};    ///< one-cell moves allowed per turning point
     bool bezier{true};         ///< quadratic Bezier smoothing (section 3.5)
     double sampleStep{0.0};    ///< m between Bezier samples; 0 = a quarter cell
+    /// Polled between corners and legs (a planner's termination condition): when it returns
+    /// true smoothPath() stops and returns the input path (SmoothingResult::cancelled).
+    std::function<bool()> cancelled;
 };
 
 /// What happened at one interior turning point.
@@ -48,6 +52,8 @@ struct SmoothingResult
     /// Set by the planners that smooth an exact solution: why the smoothed path failed the
     /// independent drivable check (checkDrivable()); the solution is then only approximate
     std::string notDrivable;
+    /// SmoothingParams::cancelled stopped the smoothing: `path` is the input path, unsmoothed.
+    bool cancelled{false};
 };
 
 /**

@@ -3,6 +3,7 @@
 /// @brief Common OMPL plumbing of the grid A* planners (one search core, search/AStar.h).
 
 #include "gridcar/collision/FootprintChecker.h"
+#include "gridcar/core/Memory.h"
 #include "gridcar/planners/search/AStar.h"
 #include "gridcar/planners/search/CarLatticeSearch.h"
 #include "gridcar/spaces/GridSE2StateSpace.h"
@@ -14,6 +15,7 @@
 #include <ompl/geometric/PathGeometric.h>
 
 #include <array>
+#include <atomic>
 #include <functional>
 #include <cstdint>
 #include <memory>
@@ -169,11 +171,19 @@ protected:
     virtual double gOf(std::uint32_t s) const { return search_->g(s); }
     /// Calls fn(s) for every state the last search expanded.
     virtual void forEachClosed(const std::function<void(std::uint32_t)> &fn) const;
-    /// Hook for a planner that post-processes its lattice path (default: none). Returns true
-    /// when it replaced @p path.
-    virtual bool postProcess(ompl::geometric::PathGeometric &path) { (void)path; return false; }
+    /// Hook for a planner that post-processes its lattice path (default: none), polling @p ptc.
+    /// Returns true when it replaced @p path.
+    virtual bool postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc)
+    {
+        (void)path;
+        (void)ptc;
+        return false;
+    }
     /// The cost the car lattice search minimises (a planner that uses it overrides this).
     virtual std::unique_ptr<LatticeCostModel> carCost() const { return std::make_unique<LengthCost>(); }
+    /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
+    /// was stopped by the termination condition), for the reason given (lastStopReason()).
+    void markNotExact(const std::string &why) { notExactBecause_ = why; }
     /// Declares `lattice_cell` and `headings` (for the planners that search the car lattice).
     void declareCarLatticeParams();
 
@@ -184,7 +194,8 @@ protected:
     double straightStep_{1.0}, diagStep_{1.4142135623730951};
     Query query_;
     std::unique_ptr<SearchSpace> search_;
-    std::uint64_t progressExpanded_{0};
+    /// Read by OMPL's Benchmark progress thread while solve() writes it.
+    std::atomic<std::uint64_t> progressExpanded_{0};
 
 private:
     ompl::base::PlannerStatus solveCarLattice(const ompl::base::PlannerTerminationCondition &ptc);
@@ -204,6 +215,15 @@ private:
     VehicleParams genericVehicle() const;
     std::shared_ptr<GridSE2StateSpace> ownSpace_;
     VehicleParams genericVehicle_;
+    /// The validity checker and motion validator setup() built on, held so that what was
+    /// built on them (checker_, the move cache, the car lattice) never outlives them; solve()
+    /// sets up again when the application has set others on the SpaceInformation.
+    ompl::base::StateValidityCheckerPtr builtOnChecker_;
+    ompl::base::MotionValidatorPtr builtOnMotion_;
+    bool builtOnCurrentWorld() const;
+    /// The first valid start of the problem, every solve() (OMPL's input states hand each
+    /// start out once; a second solve() without clear() must still see it).
+    const ompl::base::State *currentStart();
     double turningRadius_{0.0};
 
     /// @p ptc or'ed with the memory bound (and the stop state reset).
@@ -214,14 +234,16 @@ private:
     std::string tooBig_;  ///< set by setup() when the grid lattice's arrays exceed the bound
     bool memoryStopped_{false};
     std::string lastStopReason_;
+    std::string notExactBecause_;  ///< set through markNotExact() during one solve()
     bool allowCornerCutting_{false};
     bool matchGoalHeading_{false};
     bool freeStartHeading_{false};
     const ompl::base::GoalRegion *goalRegion_{nullptr};
-    mutable std::vector<std::uint8_t> moveCache_;  ///< per (cell, d): 0 unknown, 1 valid, 2 invalid
-    std::uint64_t lastExpanded_{0};
-    double lastCost_{0.0};
-    double lastSearchSeconds_{0.0};
+    mutable ZeroedBytes moveCache_;  ///< per (cell, d): 0 unknown, 1 valid, 2 invalid
+    std::atomic<std::uint64_t> lastExpanded_{0};
+    // read by the progress properties, which OMPL's Benchmark polls from another thread
+    std::atomic<double> lastCost_{0.0};
+    std::atomic<double> lastSearchSeconds_{0.0};
     std::vector<std::uint32_t> lastPath_;
     ompl::base::State *scratchA_{nullptr}, *scratchB_{nullptr};
     void freeDataStates();

@@ -7,7 +7,7 @@
 #include "gridcar/planners/SmoothedPlanner.h"
 
 #include <string>
-#include <unordered_map>
+#include "gridcar/planners/search/StateInterner.h"
 
 namespace gridcar
 {
@@ -126,10 +126,10 @@ protected:
                            const ompl::base::PlannerTerminationCondition &ptc) override;
     void decode(std::uint32_t s, int &col, int &row, int &dir) const override;
     bool usesDenseSearch() const override { return false; }
-    std::uint32_t parentOf(std::uint32_t s) const override { return hash_.parent(s); }
-    double gOf(std::uint32_t s) const override { return hash_.g(s); }
+    std::uint32_t parentOf(std::uint32_t s) const override { return records_.parent(s); }
+    double gOf(std::uint32_t s) const override { return records_.g(s); }
     void forEachClosed(const std::function<void(std::uint32_t)> &fn) const override;
-    bool postProcess(ompl::geometric::PathGeometric &path) override;
+    bool postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc) override;
     std::unique_ptr<LatticeCostModel> carCost() const override;
 
 private:
@@ -167,10 +167,9 @@ private:
     /// Lattice key ((cell * 8 + heading) * K + run) of a state; search states are compact ids
     /// handed out in order of discovery (the lattice of a 0.05 m map exceeds 2^32 keys).
     std::uint32_t intern(std::uint64_t key) const;
-    std::uint64_t keyOf(std::uint32_t id) const { return keys_[id]; }
-    mutable std::unordered_map<std::uint64_t, std::uint32_t> ids_;
-    mutable std::vector<std::uint64_t> keys_;
-    HashSearchSpace hash_;
+    std::uint64_t keyOf(std::uint32_t id) const { return states_.key(id); }
+    mutable StateInterner states_;  ///< state key -> dense state id
+    GrowingSearchSpace records_;
     SmoothingResult lastSmoothing_;
     std::vector<Pose2> latticePath_;
 };

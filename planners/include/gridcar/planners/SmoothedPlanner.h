@@ -26,8 +26,11 @@ public:
 
 /// Replaces @p path (at least 3 states) by smoothPath() of it, collision-checked with
 /// @p checker; @p raw receives the poses before smoothing. Returns the smoothing report.
+/// @p ptc is polled between corners: when it stops the smoothing, @p path is left as it was
+/// (SmoothingResult::cancelled).
 SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, const FootprintChecker &checker,
-                                   ompl::geometric::PathGeometric &path, std::vector<Pose2> &raw);
+                                   ompl::geometric::PathGeometric &path, std::vector<Pose2> &raw,
+                                   const ompl::base::PlannerTerminationCondition &ptc);
 
 /**
  * @brief Wraps a planner: solve() runs it, then replaces its solution path by smoothPath() of

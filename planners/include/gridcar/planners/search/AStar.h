@@ -5,6 +5,7 @@
 #include "gridcar/planners/search/OpenList.h"
 #include "gridcar/planners/search/SearchSpace.h"
 
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -61,7 +62,7 @@ struct SearchResult
  * cheaper g (by more than kReopenTolerance relative: not rounding noise) is reopened (default)
  * or left closed (a best-first search that keeps its first parent).
  *
- * Works on a SearchSpace (dense arrays) or a HashSearchSpace.
+ * Works on a SearchSpace (dense arrays) or a GrowingSearchSpace (chunks by dense state id).
  *
  * Open list: with f = g + h on a SearchSpace, IndexedOpenList (one entry per state,
  * decrease-key); otherwise OpenList (a binary heap with lazy deletion: stale entries are
@@ -76,7 +77,7 @@ constexpr double kReopenTolerance = 1e-9;
 
 template <class Space, class Expander, class Cancelled>
 SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expander &ex, Cancelled &&cancelled,
-                   std::uint64_t *progress = nullptr, bool reopen = true, std::uint64_t pollMask = 255u)
+                   std::atomic<std::uint64_t> *progress = nullptr, bool reopen = true, std::uint64_t pollMask = 255u)
 {
     constexpr bool custom = HasPriority<Expander>::value;
     auto priorityOf = [&](double g, double h, std::uint32_t s) {
@@ -118,7 +119,7 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
         const double g = space.g(es);
         space.close(es);
         ++res.expanded;
-        if (progress) *progress = res.expanded;
+        if (progress) progress->store(res.expanded, std::memory_order_relaxed);  // read by OMPL's progress thread
         double h;
         if constexpr (custom)
             h = ex.heuristic(es);

@@ -8,11 +8,12 @@
 #include "gridcar/planners/search/CarCollision.h"
 #include "gridcar/planners/search/CarLattice.h"
 #include "gridcar/planners/search/ObstacleHeuristic.h"
+#include "gridcar/planners/search/StateInterner.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 namespace gridcar
@@ -117,7 +118,7 @@ public:
     double heuristicRatio() const { return ratio_; }
 
     CarLatticeResult run(const CarLatticeQuery &q, const LatticeCostModel &cost, const std::function<bool()> &cancelled,
-                         std::uint64_t *progress = nullptr);
+                         std::atomic<std::uint64_t> *progress = nullptr);
 
     /// The heuristic of the last run() at a node of its lattice at heading h (world pose out).
     double heuristicAt(int i, int j);
@@ -158,10 +159,9 @@ private:
     std::unique_ptr<ObstacleHeuristic> h2d_;
     bool use2d_{true};
     double seedRadius_{0};
-    std::unordered_map<std::uint64_t, std::uint32_t> ids_;
-    std::vector<std::uint64_t> keys_;
+    StateInterner states_;  ///< lattice node key -> dense state id
     std::vector<std::int16_t> prim_;  ///< primitive that reached each state (-1: a start state)
-    HashSearchSpace space_;
+    GrowingSearchSpace space_;
     std::uint32_t shotFrom_{SearchSpace::kNoParent};
     std::vector<Pose2> shot_;
     double shotCost_{0};

@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdlib>
+#include <memory>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -93,7 +95,14 @@ private:
         std::uint16_t axisAsked, axisOk;
         std::uint8_t state;  ///< bit 0 closed, bit 1 asked, bit 2 traversable
     };
-    std::vector<Node> nodes_;
+    /// calloc'd (zero bytes: stamp 0, stale for every epoch >= 1): a box of 24 M nodes costs
+    /// no fill before the first query, only the pages the search touches
+    struct FreeNodes
+    {
+        void operator()(Node *p) const { std::free(p); }
+    };
+    std::unique_ptr<Node[], FreeNodes> nodes_;
+    std::size_t nodeCount_{0};
     std::uint32_t epoch_{0};
     /// The node, reset to "not seen" if it was last touched by an earlier search.
     Node &at(std::size_t n)

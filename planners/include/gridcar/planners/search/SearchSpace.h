@@ -1,10 +1,12 @@
 #pragma once
 /// @file SearchSpace.h
-/// @brief Per-search state storage of the search core: dense arrays (SearchSpace) or a hash table (HashSearchSpace).
+/// @brief Per-search state storage of the search core: dense arrays over every state (SearchSpace)
+/// or chunked arrays over the states a search discovers (GrowingSearchSpace).
 
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <new>
 #include <type_traits>
 #include <utility>
@@ -70,112 +72,96 @@ private:
 };
 
 /**
- * @brief The same interface as SearchSpace over a hash table (open addressing, linear probing),
- * for lattices too large for dense arrays (e.g. improved A*'s cell x heading x straight-run
- * states): memory grows with the states a search touches, not with the lattice.
+ * @brief The same interface as SearchSpace over states numbered densely as a search discovers
+ * them (StateInterner's ids), for lattices too large for arrays over every state (improved
+ * A*'s cell x heading x straight-run states, the car lattice): records in chunks of 2^16
+ * allocated when a state of the chunk is first opened, so memory grows with the states a search
+ * touches, growth never copies (no pause the termination condition cannot interrupt), and
+ * reset() is O(1) (stamps, as SearchSpace).
  */
-class HashSearchSpace
+class GrowingSearchSpace
 {
 public:
-    HashSearchSpace() { rehash(1u << 12); }
-    /// Starts a new search (O(table size)).
+    GrowingSearchSpace() = default;
+    GrowingSearchSpace(const GrowingSearchSpace &) = delete;
+    GrowingSearchSpace &operator=(const GrowingSearchSpace &) = delete;
+
+    /// Starts a new search: every state becomes unseen.
     void reset()
     {
-        if (used_ == 0) return;
-        for (Slot &sl : slots_) sl.key = kEmpty;
-        used_ = 0;
+        ++epoch_;
+        end_ = 0;
+        if (epoch_ >= (1u << 31))  // stamps would wrap: clear them once
+        {
+            for (auto &c : chunks_)
+                if (c)
+                    for (std::size_t i = 0; i < kChunk; ++i) c[i].stamp = 0;
+            epoch_ = 1;
+        }
     }
-    bool seen(std::uint32_t s) const { return find(s) != nullptr; }
+    bool seen(std::uint32_t s) const
+    {
+        const Record *r = find(s);
+        return r && (r->stamp >> 1) == epoch_;
+    }
     bool closed(std::uint32_t s) const
     {
-        const Slot *sl = find(s);
-        return sl && sl->closed;
+        const Record *r = find(s);
+        return r && r->stamp == ((epoch_ << 1) | 1u);
     }
-    double g(std::uint32_t s) const
-    {
-        const Slot *sl = find(s);
-        return sl ? sl->g : std::numeric_limits<double>::infinity();
-    }
-    std::uint32_t parent(std::uint32_t s) const
-    {
-        const Slot *sl = find(s);
-        return sl ? sl->parent : SearchSpace::kNoParent;
-    }
+    double g(std::uint32_t s) const { return seen(s) ? find(s)->g : std::numeric_limits<double>::infinity(); }
+    std::uint32_t parent(std::uint32_t s) const { return seen(s) ? find(s)->parent : SearchSpace::kNoParent; }
     void open(std::uint32_t s, double g, std::uint32_t parent)
     {
-        Slot &sl = insert(s);
-        sl.g = g;
-        sl.parent = parent;
-        sl.closed = 0;
+        Record &r = slot(s);
+        r.stamp = epoch_ << 1;
+        r.parent = parent;
+        r.g = g;
     }
-    void close(std::uint32_t s) { insert(s).closed = 1; }
-    /// Number of states the current search has touched.
-    std::size_t touched() const { return used_; }
-    /// Calls fn(state, closed) for every touched state (in table order).
+    void close(std::uint32_t s) { slot(s).stamp = (epoch_ << 1) | 1u; }
+    /// Calls fn(state, closed) for every state the current search has seen (in state order).
     template <class Fn>
     void forEach(Fn &&fn) const
     {
-        for (const Slot &sl : slots_)
-            if (sl.key != kEmpty) fn(sl.key, sl.closed != 0);
+        for (std::uint32_t s = 0; s < end_; ++s)
+            if (seen(s)) fn(s, closed(s));
     }
 
 private:
-    static constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
-    struct Slot
+    static constexpr std::size_t kChunkBits = 16, kChunk = std::size_t(1) << kChunkBits;
+    struct Record
     {
-        std::uint32_t key{kEmpty};
-        std::uint32_t parent{0};
-        double g{0.0};
-        std::uint8_t closed{0};
+        std::uint32_t stamp;
+        std::uint32_t parent;
+        double g;
     };
-    std::size_t home(std::uint32_t s) const { return (std::uint64_t(s) * 0x9E3779B97F4A7C15ull) >> shift_; }
-    const Slot *find(std::uint32_t s) const
+    struct Free
     {
-        for (std::size_t i = home(s);; i = (i + 1) & mask_)
+        void operator()(Record *p) const { std::free(p); }
+    };
+    const Record *find(std::uint32_t s) const
+    {
+        const std::size_t c = s >> kChunkBits;
+        return c < chunks_.size() && chunks_[c] ? &chunks_[c][s & (kChunk - 1)] : nullptr;
+    }
+    Record &slot(std::uint32_t s)
+    {
+        const std::size_t c = s >> kChunkBits;
+        if (c >= chunks_.size()) chunks_.resize(c + 1);
+        if (!chunks_[c])
         {
-            const Slot &sl = slots_[i];
-            if (sl.key == s) return &sl;
-            if (sl.key == kEmpty) return nullptr;
+            chunks_[c].reset(static_cast<Record *>(std::calloc(kChunk, sizeof(Record))));
+            if (!chunks_[c]) throw std::bad_alloc();
         }
+        if (s >= end_) end_ = s + 1;
+        return chunks_[c][s & (kChunk - 1)];
     }
-    Slot &insert(std::uint32_t s)
-    {
-        if (2 * (used_ + 1) > slots_.size()) rehash(slots_.size() * 2);
-        for (std::size_t i = home(s);; i = (i + 1) & mask_)
-        {
-            Slot &sl = slots_[i];
-            if (sl.key == s) return sl;
-            if (sl.key == kEmpty)
-            {
-                sl.key = s;
-                ++used_;
-                return sl;
-            }
-        }
-    }
-    void rehash(std::size_t n)
-    {
-        std::vector<Slot> old;
-        old.swap(slots_);
-        slots_.assign(n, Slot());
-        mask_ = n - 1;
-        shift_ = 64;
-        for (std::size_t k = n; k > 1; k >>= 1) --shift_;
-        used_ = 0;
-        for (const Slot &sl : old)
-            if (sl.key != kEmpty)
-            {
-                Slot &d = insert(sl.key);
-                d = sl;
-            }
-    }
-    std::vector<Slot> slots_;
-    std::size_t mask_{0};
-    int shift_{64};
-    std::size_t used_{0};
+    std::vector<std::unique_ptr<Record[], Free>> chunks_;
+    std::uint32_t epoch_{1};
+    std::uint32_t end_{0};  ///< one past the highest state opened in this search
 };
 
-/// True if the search space keeps heap positions (SearchSpace; not HashSearchSpace).
+/// True if the search space keeps heap positions (SearchSpace; not GrowingSearchSpace).
 template <class S, class = void>
 struct HasHeapPositions : std::false_type
 {
