@@ -7,7 +7,9 @@
 # libFuzzer targets with clang (./build-fuzz) and run each for 30 s on its seed corpus
 # (scripts/fuzz.sh with seed 1, so every run replays the same mutations; GRIDCAR_FUZZ_SECONDS
 # changes the 30, GRIDCAR_FUZZ_SEED the seed).
-# GRIDCAR_SKIP_SANITIZERS=1 skips the second run, GRIDCAR_SKIP_FUZZ=1 the fuzzing.
+# Then the ThreadSanitizer run of the multi-threaded tests (scripts/tsan.sh, ./build-tsan).
+# GRIDCAR_SKIP_SANITIZERS=1 skips the second run, GRIDCAR_SKIP_FUZZ=1 the fuzzing,
+# GRIDCAR_SKIP_TSAN=1 the ThreadSanitizer run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -17,6 +19,12 @@ if [ "${GRIDCAR_SKIP_FUZZ:-0}" = "1" ]; then
   echo "[gridcar] fuzzing skipped (GRIDCAR_SKIP_FUZZ=1)"
 else
   GRIDCAR_FUZZ_SEED=${GRIDCAR_FUZZ_SEED:-1} bash scripts/fuzz.sh "${GRIDCAR_FUZZ_SECONDS:-30}"
+fi
+if [ "${GRIDCAR_SKIP_TSAN:-0}" = "1" ]; then
+  echo "[gridcar] ThreadSanitizer run skipped (GRIDCAR_SKIP_TSAN=1)"
+else
+  echo "[gridcar] ThreadSanitizer build of the multi-threaded tests in ./build-tsan"
+  bash scripts/tsan.sh
 fi
 if [ "${GRIDCAR_SKIP_SANITIZERS:-0}" = "1" ]; then
   echo "[gridcar] sanitizer run skipped (GRIDCAR_SKIP_SANITIZERS=1)"

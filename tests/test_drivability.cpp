@@ -50,6 +50,21 @@ TEST(Drivability, StraightPathInTheOpenIsDrivable)
     EXPECT_EQ(d.firstCollision, -1.0);
 }
 
+TEST(Drivability, ACancelStopsTheCheckWithoutAVerdictOfDrivable)
+{
+    const World w = world("paper-i");
+    std::vector<Pose2> path;
+    for (int i = 0; i <= 600; ++i) path.push_back({10 + 0.1 * i, 30, 0});  // 60 m, 600 segments
+    DrivabilityOptions o;
+    o.cancelled = [] { return true; };
+    const Drivability d = checkDrivable(path, *w.checker, o);
+    EXPECT_FALSE(d.drivable);
+    EXPECT_NE(d.reason.find("stopped"), std::string::npos) << d.reason;
+    EXPECT_LT(d.posesChecked, 1000) << "stopped at the first poll, not after 3000 poses";
+    o.cancelled = [] { return false; };
+    EXPECT_TRUE(checkDrivable(path, *w.checker, o).drivable);
+}
+
 TEST(Drivability, APathThroughTheWallIsNotAndSaysWhere)
 {
     const World w = world("paper-i");

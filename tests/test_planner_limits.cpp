@@ -17,6 +17,8 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <atomic>
+#include <thread>
 
 using namespace gridcar;
 using namespace gridcar::test;
@@ -75,36 +77,85 @@ GridSetup bigSetup(Pose2 &start, Pose2 &goal)
 
 TEST(PlannerLimits, TimeLimitIsHonouredOn24MCellsByEveryPlanner)
 {
+    // three ways a search is stopped: the time limit with the set-up done before solve(), the
+    // time limit with the set-up inside SimpleSetup::solve() (a fresh planner: its per-map
+    // arrays allocated there), and a cancel flag set from another thread
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     Pose2 start, goal;
     GridSetup s = bigSetup(start, goal);
     ASSERT_TRUE(s.checker->isValid(start) && s.checker->isValid(goal));
     const double limit = 0.2;
     double worst = 0;
-    for (const auto &c : allConfigurations())
-    {
-        s.ss->clear();
-        s.setStartAndGoal(start, goal);
-        s.ss->setPlanner(configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, false, false}));
-        s.ss->setup();  // the application's set-up (allocations); the search is all in solve()
-        ob::PlannerStatus st;
-        double late = 1e9;
-        // the better of two tries: this machine is shared, and a page-fault storm of another
-        // process can hold any one return back
-        for (int attempt = 0; attempt < 2 && late >= 0.05; ++attempt)
+    auto configs = allConfigurations();
+    // the car lattice at the map's own cells: slow enough to run into the limit
+    configs.push_back({"corner-astar", {{"lattice_cell", "0.298"}}});
+    configs.push_back({"improved-astar", {{"lattice_cell", "0.298"}}});
+    for (const auto &c : configs)
+        for (const char *mode : {"limit", "setup in solve", "cancel"})
         {
-            s.ss->clear();
-            s.setStartAndGoal(start, goal);
-            const auto t0 = std::chrono::steady_clock::now();
-            st = s.ss->solve(limit);
-            late = std::min(late, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() - limit);
+            const std::string m = mode;
+            ob::PlannerStatus st;
+            double late = 1e9;
+            // the better of two tries: this machine is shared, and a page-fault storm of another
+            // process can hold any one return back
+            for (int attempt = 0; attempt < 2 && late >= 0.05; ++attempt)
+            {
+                s.ss->clear();
+                s.setStartAndGoal(start, goal);
+                s.ss->setPlanner(configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, false, false}));
+                if (m != "setup in solve") s.ss->setup();  // else SimpleSetup::solve() sets the planner up
+                const auto t0 = std::chrono::steady_clock::now();
+                auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+                if (m == "cancel")
+                {
+                    std::atomic<bool> stop{false};
+                    std::atomic<double> setAt{0.0};
+                    std::thread canceller([&] {
+                        std::this_thread::sleep_for(std::chrono::duration<double>(limit));
+                        setAt = since();
+                        stop = true;
+                    });
+                    st = s.ss->solve(ob::PlannerTerminationCondition([&] { return stop.load(); }));
+                    const double back = since();
+                    canceller.join();
+                    late = std::min(late, back - setAt);
+                }
+                else
+                {
+                    st = s.ss->solve(limit);
+                    late = std::min(late, since() - limit);
+                }
+            }
+            worst = std::max(worst, late);
+            std::printf("%-40s %-15s %s, %+.3f s after the limit\n", label(c).c_str(), mode, st.asString().c_str(), late);
+            EXPECT_LT(late, 0.05) << label(c) << " " << mode;
+            EXPECT_NE(st, ob::PlannerStatus::EXACT_SOLUTION) << label(c) << ": the goal is walled in";
         }
-        worst = std::max(worst, late);
-        std::printf("%-40s %s, %+.3f s after the limit\n", label(c).c_str(), st.asString().c_str(), late);
-        EXPECT_LT(late, 0.05) << label(c);
-        EXPECT_NE(st, ob::PlannerStatus::EXACT_SOLUTION) << label(c) << ": the goal is walled in";
-    }
     std::printf("worst lateness %.3f s\n", worst);
+}
+
+TEST(PlannerLimits, SmoothingStoppedByTheConditionIsNoExactSolution)
+{
+    // a search that finds its goal before it first polls the condition (a few expansions), and
+    // a condition that is already true: the smoothing after it must stop, and the path it did
+    // not finish is no exact solution
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    for (const std::pair<std::string, PlannerParams> &c :
+         std::vector<std::pair<std::string, PlannerParams>>{{"improved-astar", {{"lattice", "grid"}}}, {"astar-octile+smooth", {}}})
+    {
+        SCOPED_TRACE(label(c));
+        GridSetup s = testSetup("paper-c-robot");
+        const OccupancyGrid &g = *s.grid;
+        s.ss->setPlanner(configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, false, false}));
+        s.setStartAndGoal(cellPose(g, 2, 20), cellPose(g, 12, 26));  // a diagonal, then straight: one corner
+        s.ss->setup();
+        const ob::PlannerStatus st = s.ss->solve(ob::PlannerTerminationCondition([] { return true; }));
+        EXPECT_EQ(st, ob::PlannerStatus::APPROXIMATE_SOLUTION);
+        // without the condition the same query is an exact, smoothed solution
+        s.ss->clear();
+        s.setStartAndGoal(cellPose(g, 2, 20), cellPose(g, 12, 26));
+        EXPECT_EQ(s.ss->solve(10.0), ob::PlannerStatus::EXACT_SOLUTION);
+    }
 }
 
 TEST(PlannerLimits, MemoryBoundStopsEveryGridPlannerWithAReason)

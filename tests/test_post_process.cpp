@@ -112,6 +112,30 @@ TEST(PostProcess, SmoothedPathIsCollisionFreeAndWithinKmaxWhereAdjusted)
     EXPECT_NEAR(r.path.back().y, path.back().y, 1e-9);
 }
 
+TEST(PostProcess, ACancelStopsTheSmoothingAndReturnsTheInput)
+{
+    GridSetup s = blockSetup();
+    const auto &g = *s.grid;
+    std::vector<Pose2> path;
+    for (int c = 5; c <= 20; ++c) path.push_back({g.cellCenterX(c), g.cellCenterY(70), 0});
+    for (int r = 69; r >= 12; --r) path.push_back({g.cellCenterX(20), g.cellCenterY(r), M_PI / 2});
+    for (int c = 21; c <= 70; ++c) path.push_back({g.cellCenterX(c), g.cellCenterY(12), 0});
+    SmoothingParams prm;
+    prm.lineOfSight = false;
+    int calls = 0, callsAfterTrue = 0;
+    prm.cancelled = [&] {
+        if (calls >= 2) ++callsAfterTrue;
+        return ++calls > 2;  // false twice (the start, the first corner), then true
+    };
+    const SmoothingResult r = smoothPath(path, *s.checker, prm);
+    EXPECT_TRUE(r.cancelled);
+    EXPECT_EQ(callsAfterTrue, 1) << "nothing more after the condition said stop";
+    ASSERT_EQ(r.path.size(), path.size());
+    for (std::size_t i = 0; i < path.size(); ++i) EXPECT_EQ(r.path[i].x, path[i].x);
+    prm.cancelled = [] { return false; };
+    EXPECT_FALSE(smoothPath(path, *s.checker, prm).cancelled);
+}
+
 TEST(PostProcess, FailuresAreReportedNotHidden)
 {
     GridSetup s = blockSetup();

@@ -235,6 +235,7 @@ namespace
 SmoothingResult smoothOrThrow(const std::vector<Pose2> &path, const FootprintChecker &checker, const SmoothingParams &prm)
 {
     const auto t0 = std::chrono::steady_clock::now();
+    stopIfCancelled(prm);  // not even started when the condition already says stop
     SmoothingResult r;
     const double kmax = prm.maxCurvature > 0 ? prm.maxCurvature : checker.vehicle().maxCurvature();
     const double step = prm.sampleStep > 0 ? prm.sampleStep : checker.grid().resolution() / 4;
