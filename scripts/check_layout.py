@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Checks the layout rules of docs/ARCHITECTURE.md on the source tree (run by CTest):
 
-1. gridcar_core (include/ and src/ apart from src/cli) includes no OMPL header;
+1. gridcar_core (include/ and src/) includes no OMPL header;
 2. no C++ source file is above 400 lines;
-3. no function is above 120 lines (brace matching on code with comments and strings blanked).
+3. no function is above 120 lines (brace matching on code with comments and strings blanked);
+4. no layer includes a header of a layer above it (core < spaces < planners < benchmarks <
+   apps: the link order of the data flow).
 
 Usage: check_layout.py SOURCE_DIR. Prints every violation; exit status 1 if there is any.
 """
@@ -13,9 +15,16 @@ import sys
 
 MAX_FILE_LINES = 400
 MAX_FUNCTION_LINES = 120
-CODE_DIRS = ["include", "src", "spaces", "planners", "benchmarks", "tests"]
+CODE_DIRS = ["include", "src", "spaces", "planners", "benchmarks", "apps", "tests"]
 CORE_DIRS = ["include", "src"]
-CORE_EXCLUDED = ["src/cli"]
+CORE_EXCLUDED = []
+# each layer's folders, and the header folders (gridcar/<name>/) of the layers above it
+LAYERS = [
+    (["include", "src"], ["spaces", "planners", "bench"]),
+    (["spaces"], ["planners", "bench"]),
+    (["planners"], ["bench"]),
+    (["benchmarks"], []),
+]
 
 
 def blank_comments_and_strings(src):
@@ -87,6 +96,13 @@ def main():
                 for i, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
                     if re.match(r'\s*#\s*include\s*[<"]ompl/', line):
                         problems.append(f"{rel}:{i}: gridcar_core includes an OMPL header: {line.strip()}")
+            for dirs, above in LAYERS:
+                if not any(rel.startswith(d + "/") for d in dirs):
+                    continue
+                for i, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+                    m = re.match(r'\s*#\s*include\s*[<"]gridcar/(\w+)/', line)
+                    if m and m.group(1) in above:
+                        problems.append(f"{rel}:{i}: includes a header of a layer above it: {line.strip()}")
     for p in problems:
         print(p)
     print(f"check_layout: {len(problems)} problem(s)")

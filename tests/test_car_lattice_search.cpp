@@ -6,7 +6,7 @@
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/planners/ImprovedAStar.h"
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 #include "gridcar/planners/search/CarLatticeSearch.h"
 #include "gridcar/spaces/Goals.h"
 #include "gridcar/spaces/OmplAdapters.h"

@@ -4,7 +4,7 @@
 #include "gridcar/path/Cusps.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/path/PathMetrics.h"
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 #include "gridcar/spaces/CarSpaces.h"
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"

@@ -8,7 +8,7 @@
 #include "gridcar/objectives/Objectives.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/path/PathMetrics.h"
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/render/Render.h"
 #include "gridcar/sim/Simulation.h"

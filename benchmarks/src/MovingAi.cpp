@@ -1,7 +1,7 @@
 #include "gridcar/bench/MovingAi.h"
 
 #include "gridcar/core/Errors.h"
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 
 #include <algorithm>
 #include <chrono>

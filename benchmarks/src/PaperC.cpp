@@ -6,7 +6,7 @@
 #include "gridcar/core/Errors.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"
 

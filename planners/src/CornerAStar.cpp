@@ -69,6 +69,7 @@ CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanne
     declareParam<double>("corner_weight_135", this, &CornerAStar::setWeight135,
                          &CornerAStar::weight135, "0.:0.1:200.");
     declareParam<std::string>("weights", this, &CornerAStar::setWeightMode, &CornerAStar::weightMode, "paper,physics");
+    declareParam<std::string>("lattice", this, &CornerAStar::setLattice, &CornerAStar::lattice, "car,grid");
     declareParam<std::string>("mode", this, &CornerAStar::setMode, &CornerAStar::mode, "drivable,paper");
     declareCarLatticeParams();
 }
@@ -78,7 +79,15 @@ void CornerAStar::setMode(const std::string &m)
     if (m != "drivable" && m != "paper")
         throw std::invalid_argument("corner-astar: mode must be 'drivable' or 'paper', got '" + printable(m) + "'");
     drivable_ = m == "drivable";
-    setup_ = false;
+    parameterSet("mode");
+}
+
+void CornerAStar::setLattice(const std::string &l)
+{
+    if (l != "car" && l != "grid")
+        throw std::invalid_argument("corner-astar: lattice must be 'car' or 'grid', got '" + printable(l) + "'");
+    drivable_ = l == "car";
+    parameterSet("lattice");
 }
 
 double CornerAStar::turnWeight(double rad) const
@@ -126,25 +135,41 @@ double checkedWeight(double w, const char *name)
 }
 }  // namespace
 
-void CornerAStar::setWeight45(double w) { userWeights_.w45 = weights_.w45 = checkedWeight(w, "corner_weight_45"); }
-void CornerAStar::setWeight90(double w) { userWeights_.w90 = weights_.w90 = checkedWeight(w, "corner_weight_90"); }
-void CornerAStar::setWeight135(double w) { userWeights_.w135 = weights_.w135 = checkedWeight(w, "corner_weight_135"); }
+void CornerAStar::setWeight45(double w)
+{
+    userWeights_.w45 = checkedWeight(w, "corner_weight_45");
+    userSet_[0] = true;
+    parameterSet("corner_weight_45");
+}
+void CornerAStar::setWeight90(double w)
+{
+    userWeights_.w90 = checkedWeight(w, "corner_weight_90");
+    userSet_[1] = true;
+    parameterSet("corner_weight_90");
+}
+void CornerAStar::setWeight135(double w)
+{
+    userWeights_.w135 = checkedWeight(w, "corner_weight_135");
+    userSet_[2] = true;
+    parameterSet("corner_weight_135");
+}
 
 void CornerAStar::setWeightMode(const std::string &mode)
 {
     if (mode != "paper" && mode != "physics")
         throw std::invalid_argument("corner-astar: weights must be 'paper' or 'physics', got '" + printable(mode) + "'");
     physics_ = mode == "physics";
-    setup_ = false;
+    parameterSet("weights");
 }
 
 void CornerAStar::setup()
 {
     GridPlanner::setup();
-    if (physics_)
-        weights_ = physicsCornerWeights(vehicle());  // without gridcar's checker: the default car
-    else
-        weights_ = userWeights_;
+    // the weights set explicitly, the others per `weights` (the same whenever they were set)
+    const CornerWeights base = physics_ ? physicsCornerWeights(vehicle()) : CornerWeights();  // no checker: the default car
+    weights_.w45 = userSet_[0] ? userWeights_.w45 : base.w45;
+    weights_.w90 = userSet_[1] ? userWeights_.w90 : base.w90;
+    weights_.w135 = userSet_[2] ? userWeights_.w135 : base.w135;
 }
 
 std::size_t CornerAStar::stateCount() const { return std::size_t(width_) * height_ * 8; }

@@ -9,7 +9,9 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
+#include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <cstdio>
 #include <cmath>
 
@@ -57,6 +59,19 @@ void GridPlanner::setAllowCornerCutting(bool v)
 {
     if (v != allowCornerCutting_) moveCache_.zero();
     allowCornerCutting_ = v;
+    parameterSet("allow_corner_cutting");
+}
+
+void GridPlanner::checkParametersAct() const
+{
+    const bool car = usesCarLattice();
+    const std::vector<std::string> other = car ? gridLatticeOnlyParams() : carLatticeOnlyParams();
+    for (const std::string &p : setParams_)
+        if (std::find(other.begin(), other.end(), p) != other.end())
+            throw std::invalid_argument(getName() + ": parameter '" + p + "' acts only on the " +
+                                        (car ? "grid lattice (the paper's search on the map's cells: lattice=grid)"
+                                             : "car lattice (lattice=car)") +
+                                        ", and this planner is configured for the " + (car ? "car" : "grid") + " lattice");
 }
 
 bool GridPlanner::builtOnCurrentWorld() const
@@ -72,6 +87,7 @@ const ompl::base::State *GridPlanner::currentStart()
 
 void GridPlanner::setup()
 {
+    checkParametersAct();
     ompl::base::Planner::setup();
     if (!builtOnCurrentWorld())
     {

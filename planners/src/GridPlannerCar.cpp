@@ -29,6 +29,7 @@ void GridPlanner::setHeuristicWeight(double w)
     if (!std::isfinite(w) || w < 1.0 || w > 100.0)
         throw std::invalid_argument(getName() + ": heuristic_weight must be a number in [1, 100]");
     heuristicWeight_ = w;
+    parameterSet("heuristic_weight");
 }
 
 void GridPlanner::setLatticeCell(double m)
@@ -36,7 +37,7 @@ void GridPlanner::setLatticeCell(double m)
     if (!std::isfinite(m) || m < 0.0 || m > 1000.0)
         throw std::invalid_argument(getName() + ": lattice_cell must be 0 (automatic) or a length in (0, 1000] m");
     latticeCell_ = m;
-    setup_ = false;
+    parameterSet("lattice_cell");
 }
 
 void GridPlanner::setLatticeHeadings(int h)
@@ -46,7 +47,7 @@ void GridPlanner::setLatticeHeadings(int h)
                                                 "vectors: 32 or 72 equal steps do not land on nodes), got " +
                                     std::to_string(h));
     latticeHeadings_ = h;
-    setup_ = false;
+    parameterSet("headings");
 }
 
 CarLatticeConfig GridPlanner::carLatticeConfig() const

@@ -24,7 +24,7 @@ void GridPlanner::setMaxMemoryMb(double mb)
     if (!std::isfinite(mb) || mb < 0.0 || mb > 1e7)
         throw std::invalid_argument(getName() + ": max_memory_mb must be 0 (no bound) or a size in MB up to 1e7");
     maxMemoryMb_ = mb;
-    setup_ = false;
+    parameterSet("max_memory_mb");
 }
 
 ompl::base::PlannerTerminationCondition GridPlanner::withMemoryBound(const ompl::base::PlannerTerminationCondition &ptc)
@@ -62,7 +62,7 @@ void GridPlanner::setTurningRadius(double r)
     if (!std::isfinite(r) || r < 0.0 || r > 1e4)
         throw std::invalid_argument(getName() + ": turning_radius must be 0 (automatic) or a length in (0, 10000] m");
     turningRadius_ = r;
-    setup_ = false;
+    parameterSet("turning_radius");
 }
 
 double GridPlanner::turningRadius() const

@@ -43,25 +43,34 @@ std::string oneOf(const std::string &v, std::initializer_list<const char *> allo
 void ImprovedAStar::setMode(const std::string &m)
 {
     paperMode_ = oneOf(m, {"paper", "integral"}, "mode") == "paper";
-    setup_ = false;
+    parameterSet("mode");
 }
 void ImprovedAStar::setLattice(const std::string &l)
 {
-    car_ = oneOf(l, {"car", "grid"}, "lattice") == "car";
-    setup_ = false;
+    carLattice_ = oneOf(l, {"car", "grid"}, "lattice") == "car";
+    parameterSet("lattice");
 }
 void ImprovedAStar::setHeuristic(const std::string &h)
 {
     heuristic_ = oneOf(h, {"auto", "arc", "euclidean", "octile"}, "heuristic");
-    setup_ = false;
+    parameterSet("heuristic");
 }
 void ImprovedAStar::setDelta(double d)
 {
     if (!std::isfinite(d) || d < 0.0) throw std::invalid_argument("improved-astar: delta must be a finite number >= 0");
     delta_ = d;
+    parameterSet("delta");
 }
-void ImprovedAStar::setObstacleCost(const std::string &c) { voronoi_ = oneOf(c, {"inverse", "voronoi"}, "obstacle_cost") == "voronoi"; }
-void ImprovedAStar::setContour(const std::string &c) { points_ = oneOf(c, {"fcl", "points"}, "contour") == "points"; }
+void ImprovedAStar::setObstacleCost(const std::string &c)
+{
+    voronoi_ = oneOf(c, {"inverse", "voronoi"}, "obstacle_cost") == "voronoi";
+    parameterSet("obstacle_cost");
+}
+void ImprovedAStar::setContour(const std::string &c)
+{
+    points_ = oneOf(c, {"fcl", "points"}, "contour") == "points";
+    parameterSet("contour");
+}
 
 ImprovedAStar::~ImprovedAStar()
 {

@@ -20,23 +20,6 @@
 
 namespace gridcar
 {
-std::vector<std::string> gridPlannerNames()
-{
-    return {"dijkstra", "astar-manhattan", "astar-euclidean", "astar-octile", "corner-astar", "improved-astar"};
-}
-
-std::vector<std::string> omplPlannerNames()
-{
-    return {"rrt", "rrtconnect", "rrtstar", "prm", "prmstar", "lazyprmstar", "bitstar", "informedrrtstar"};
-}
-
-std::vector<std::string> plannerNames()
-{
-    auto n = gridPlannerNames();
-    for (const auto &o : omplPlannerNames()) n.push_back(o);
-    return n;
-}
-
 namespace
 {
 /// BIT* without the two progress properties that read its graph while it changes: OMPL's
@@ -62,17 +45,81 @@ bool splitSuffix(const std::string &name, std::string &base, const std::string &
 }
 }  // namespace
 
+const std::vector<PlannerEntry> &plannerRegistry()
+{
+    namespace og = ompl::geometric;
+    using SI = ompl::base::SpaceInformationPtr;
+    auto grid = [](GridHeuristic h, const char *name) {
+        return [h, name](const SI &si) { return std::make_shared<GridAStar>(si, h, name); };
+    };
+    static const std::vector<PlannerEntry> registry{
+        {"dijkstra", "8-connected Dijkstra on the map's cells", true, grid(GridHeuristic::Zero, "dijkstra")},
+        {"astar-manhattan", "8-connected A*, Manhattan heuristic (inadmissible on diagonals)", true,
+         grid(GridHeuristic::Manhattan, "astar-manhattan")},
+        {"astar-euclidean", "8-connected A*, Euclidean heuristic", true, grid(GridHeuristic::Euclidean, "astar-euclidean")},
+        {"astar-octile", "8-connected A*, octile heuristic", true, grid(GridHeuristic::Octile, "astar-octile")},
+        {"corner-astar", "paper C's corner-weighted A* on the car lattice (drivable paths)", true,
+         [](const SI &si) { return std::make_shared<CornerAStar>(si); }},
+        {"improved-astar", "paper I's improved A* on the car lattice (drivable paths)", true,
+         [](const SI &si) { return std::make_shared<ImprovedAStar>(si); }},
+        {"corner-astar-grid", "paper C's search as published: (cell, direction) on the map's cells", true,
+         [](const SI &si) {
+             auto p = std::make_shared<CornerAStar>(si);
+             p->setLattice("grid");
+             p->setName("corner-astar-grid");
+             return p;
+         }},
+        {"improved-astar-grid", "paper I's search as published: (cell, direction, run) on the map's cells, smoothed", true,
+         [](const SI &si) {
+             auto p = std::make_shared<ImprovedAStar>(si);
+             p->setLattice("grid");
+             p->setName("improved-astar-grid");
+             return p;
+         }},
+        {"rrt", "OMPL's RRT", false, [](const SI &si) { return std::make_shared<og::RRT>(si); }},
+        {"rrtconnect", "OMPL's RRTConnect", false, [](const SI &si) { return std::make_shared<og::RRTConnect>(si); }},
+        {"rrtstar", "OMPL's RRT*", false, [](const SI &si) { return std::make_shared<og::RRTstar>(si); }},
+        {"prm", "OMPL's PRM", false, [](const SI &si) { return std::make_shared<og::PRM>(si); }},
+        {"prmstar", "OMPL's PRM*", false, [](const SI &si) { return std::make_shared<og::PRMstar>(si); }},
+        {"lazyprmstar", "OMPL's LazyPRM*", false, [](const SI &si) { return std::make_shared<og::LazyPRMstar>(si); }},
+        {"bitstar", "OMPL's BIT* (without the two progress properties that race under Benchmark)", false,
+         [](const SI &si) { return std::make_shared<BenchmarkSafeBITstar>(si); }},
+        {"informedrrtstar", "OMPL's Informed RRT*", false, [](const SI &si) { return std::make_shared<og::InformedRRTstar>(si); }},
+    };
+    return registry;
+}
+
+const PlannerEntry *findPlanner(const std::string &name)
+{
+    for (const PlannerEntry &e : plannerRegistry())
+        if (e.name == name) return &e;
+    return nullptr;
+}
+
+namespace
+{
+std::vector<std::string> namesWhere(int ours)
+{
+    std::vector<std::string> out;
+    for (const PlannerEntry &e : plannerRegistry())
+        if (ours < 0 || int(e.ours) == ours) out.push_back(e.name);
+    return out;
+}
+}  // namespace
+
+std::vector<std::string> gridPlannerNames() { return namesWhere(1); }
+std::vector<std::string> omplPlannerNames() { return namesWhere(0); }
+std::vector<std::string> plannerNames() { return namesWhere(-1); }
+
 bool isPlannerName(const std::string &name)
 {
     std::string base = name;
     if (!splitSuffix(name, base, "+smooth")) splitSuffix(name, base, "+simplify");
-    const auto known = plannerNames();
-    return std::find(known.begin(), known.end(), base) != known.end();
+    return findPlanner(base) != nullptr;
 }
 
 ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name)
 {
-    namespace og = ompl::geometric;
     for (const auto &[suffix, method] : {std::make_pair(std::string("+smooth"), SmoothedPlanner::Method::PaperI),
                                           std::make_pair(std::string("+simplify"), SmoothedPlanner::Method::OmplSimplifier)})
         if (std::string base; splitSuffix(name, base, suffix))
@@ -81,20 +128,7 @@ ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, co
             p->setName(name);
             return p;
         }
-    if (name == "dijkstra") return std::make_shared<GridAStar>(si, GridHeuristic::Zero, name);
-    if (name == "astar-manhattan") return std::make_shared<GridAStar>(si, GridHeuristic::Manhattan, name);
-    if (name == "astar-euclidean") return std::make_shared<GridAStar>(si, GridHeuristic::Euclidean, name);
-    if (name == "astar-octile") return std::make_shared<GridAStar>(si, GridHeuristic::Octile, name);
-    if (name == "corner-astar") return std::make_shared<CornerAStar>(si);
-    if (name == "improved-astar") return std::make_shared<ImprovedAStar>(si);
-    if (name == "rrt") return std::make_shared<og::RRT>(si);
-    if (name == "rrtconnect") return std::make_shared<og::RRTConnect>(si);
-    if (name == "rrtstar") return std::make_shared<og::RRTstar>(si);
-    if (name == "prm") return std::make_shared<og::PRM>(si);
-    if (name == "prmstar") return std::make_shared<og::PRMstar>(si);
-    if (name == "lazyprmstar") return std::make_shared<og::LazyPRMstar>(si);
-    if (name == "bitstar") return std::make_shared<BenchmarkSafeBITstar>(si);
-    if (name == "informedrrtstar") return std::make_shared<og::InformedRRTstar>(si);
+    if (const PlannerEntry *e = findPlanner(name)) return e->make(si);
     std::string known;
     for (const auto &n : plannerNames()) known += (known.empty() ? "" : ", ") + n;
     throw std::invalid_argument("unknown planner '" + printable(name) + "' (known: " + known +

@@ -43,17 +43,6 @@ CornerSpeeds cornerSpeeds(const VehicleParams &v)
     return c;
 }
 
-CornerWeights physicsCornerWeights(const VehicleParams &v)
-{
-    auto lost = [&](double vc) { return cornerDistanceLost(v, vc); };
-    const CornerSpeeds vc = cornerSpeeds(v);
-    CornerWeights w;
-    w.w45 = lost(vc.v45);
-    w.w90 = lost(vc.v90);
-    w.w135 = lost(vc.v135);
-    return w;
-}
-
 double speedLimit(const VehicleParams &v, double theta, double window)
 {
     const double V = v.maxSpeed;

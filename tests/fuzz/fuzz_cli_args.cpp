@@ -2,8 +2,8 @@
 // --start-cell / --goal-cell against a 100 x 80 map), number lists, and --param NAME=VALUE.
 #include "FuzzUtil.h"
 
-#include "../../src/cli/Cli.h"
-#include "gridcar/planners/PlanQuery.h"
+#include "../../apps/cli/Cli.h"
+#include "gridcar/bench/PlanQuery.h"
 
 #include <sstream>
 

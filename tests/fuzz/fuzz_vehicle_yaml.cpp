@@ -1,6 +1,7 @@
 // Vehicle YAML files (VehicleParams::fromNameOrFile), then what the planners derive from one.
 #include "FuzzUtil.h"
 
+#include "gridcar/planners/CornerWeights.h"
 #include "gridcar/vehicle/Dynamics.h"
 #include "gridcar/vehicle/VehicleParams.h"
 

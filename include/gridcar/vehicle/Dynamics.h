@@ -2,7 +2,8 @@
 /// @file Dynamics.h
 /// @brief What follows from a vehicle's dynamics limits, in one place: the lateral
 /// acceleration limit, speed limits through heading changes, corner speeds and the distance /
-/// time a corner costs (corner A*'s physics weights, the driving-time objective), and the
+/// time a corner costs (from which corner A*'s physics weights come: planners/CornerWeights.h; the
+/// driving-time objective), and the
 /// velocity profile and driving time of a path (the benchmark, the simulation).
 
 #include "gridcar/core/Pose2.h"
@@ -14,14 +15,6 @@ namespace gridcar
 {
 /// The lateral acceleration the vehicle may use in a turn: min(mu g, max_lateral_accel), m/s^2.
 double lateralAccelLimit(const VehicleParams &v);
-
-/// Corner weights of corner-weighted A* (metres of lost distance per heading change).
-struct CornerWeights
-{
-    double w45{2.7};   ///< paper C's value
-    double w90{7.0};   ///< paper C's value
-    double w135{11.3}; ///< our choice (see CornerAStar)
-};
 
 /// Speeds (m/s) at which a vehicle takes 45-, 90- and 135-degree grid corners.
 struct CornerSpeeds
@@ -37,9 +30,6 @@ CornerSpeeds cornerSpeeds(const VehicleParams &v);
 /// Distance (m) lost driving through a corner taken at @p cornerSpeed instead of v_max: v_max
 /// x the time lost braking to it and accelerating again, (v_max - v_c)^2 / 2 x (1/a + 1/d).
 double cornerDistanceLost(const VehicleParams &v, double cornerSpeed);
-
-/// Corner A*'s `physics` weights: cornerDistanceLost() at each of cornerSpeeds() (m).
-CornerWeights physicsCornerWeights(const VehicleParams &v);
 
 /// Seconds lost for a heading change of @p thetaRad (0 for none): cornerDistanceLost() / v_max
 /// at the speed limit of a turn of R_min opened up by 1 / tan(theta / 2).

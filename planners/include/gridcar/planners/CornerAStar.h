@@ -2,6 +2,7 @@
 /// @file CornerAStar.h
 /// @brief Paper C's corner-weighted A*.
 
+#include "gridcar/planners/CornerWeights.h"
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/vehicle/Dynamics.h"
 
@@ -12,14 +13,14 @@ namespace gridcar
 /**
  * @brief Corner-weighted A* (paper C).
  *
- * `mode = drivable` (default): the car lattice (search/CarLattice.h, the successors improved
+ * `lattice = car` (default; the older name `mode = drivable`): the car lattice (search/CarLattice.h, the successors improved
  * A* uses; `lattice_cell`, `headings` 8 or 16, default 16), step cost = primitive length +
  * the corner weight of its heading change, interpolated linearly in the turn angle between
  * 0 (0 degrees) and the 45 / 90 / 135-degree weights below (a 22.5-degree turn costs half the
  * 45-degree weight; two 45-degree turns cost 2 x w45, a little less than w90). Its paths have
  * curvature <= K_max and a free footprint as searched.
  *
- * `mode = paper`: paper C's 8-connected search on the map's cells: state = (cell, arrival direction); step cost = step
+ * `lattice = grid` (`mode = paper`; the planner `corner-astar-grid`): paper C's 8-connected search on the map's cells: state = (cell, arrival direction); step cost = step
  * length + corner weight of the heading change (0 / 45 / 90 / 135 degrees). A 180-degree
  * reversal is never a successor. Heuristic: octile distance (admissible: weights are >= 0).
  *
@@ -30,11 +31,12 @@ namespace gridcar
  * are NOT rescaled with the cell size: on paper C's 1 m grid a 90-degree corner costs as much
  * as 7 cells, on a 0.298 m grid as much as 23.5 cells, the same 7 m of lost driving.
  *
- * `weights = physics` derives each weight from the VehicleParams of the footprint checker as
+ * `weights = physics` derives the weights not set explicitly from the VehicleParams of the footprint checker as
  * v_max x (time lost braking for and leaving the corner) = (v_max - v_c)^2 / 2 x (1/a + 1/d),
  * with a / d the acceleration / deceleration and v_c the corner speed (the vehicle's
  * corner_speed_* when set, else sqrt(min(mu g, a_lat) r) with r the minimum turning radius
- * scaled by 1 / tan(theta / 2)).
+ * scaled by 1 / tan(theta / 2)). A `corner_weight_*` set explicitly is used as given with either
+ * `weights`, whenever it is set (before or after setup()); the others come from `weights`.
  *
  * @par External documentation
  * Paper C: "Shortest driving-time path planning considering UGV driving characteristics and
@@ -58,6 +60,10 @@ public:
     std::string weightMode() const { return physics_ ? "physics" : "paper"; }
     std::string mode() const { return drivable_ ? "drivable" : "paper"; }
     void setMode(const std::string &m);
+    /// `lattice`: car (= mode drivable) or grid (= mode paper), the switch's name shared with
+    /// improved-astar.
+    std::string lattice() const { return drivable_ ? "car" : "grid"; }
+    void setLattice(const std::string &l);
     bool usesCarLattice() const override { return drivable_; }
     /// Corner weight (m) of a heading change of @p rad radians (linear between the table's).
     double turnWeight(double rad) const;
@@ -71,8 +77,9 @@ protected:
     std::unique_ptr<LatticeCostModel> carCost() const override;
 
 private:
-    CornerWeights userWeights_;  ///< paper mode (declared parameters)
-    CornerWeights weights_;      ///< in use
+    CornerWeights userWeights_;  ///< the declared parameters (paper C's values until set)
+    bool userSet_[3]{false, false, false};  ///< which of them were set explicitly (45, 90, 135)
+    CornerWeights weights_;      ///< in use (setup(): userWeights_ where set, else per `weights`)
     bool physics_{false};
     bool drivable_{true};
 };

@@ -19,6 +19,7 @@
 #include <functional>
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -73,8 +74,16 @@ public:
     bool matchGoalHeading() const { return matchGoalHeading_; }
     /// When true the start state's yaw is ignored (any first move costs no corner).
     bool freeStartHeading() const { return freeStartHeading_; }
-    void setFreeStartHeading(bool v) { freeStartHeading_ = v; }
-    void setMatchGoalHeading(bool v) { matchGoalHeading_ = v; }
+    void setFreeStartHeading(bool v)
+    {
+        freeStartHeading_ = v;
+        parameterSet("free_start_heading");
+    }
+    void setMatchGoalHeading(bool v)
+    {
+        matchGoalHeading_ = v;
+        parameterSet("match_goal_heading");
+    }
 
     /// Statistics of the last solve().
     std::uint64_t expandedNodes() const { return lastExpanded_; }
@@ -181,6 +190,19 @@ protected:
     }
     /// The cost the car lattice search minimises (a planner that uses it overrides this).
     virtual std::unique_ptr<LatticeCostModel> carCost() const { return std::make_unique<LengthCost>(); }
+    /// Every parameter setter ends here: set-up is redone before the next solve() (whenever the
+    /// parameter is set, before or after setup()), and the name is remembered for setup()'s
+    /// check that it acts in the planner as configured.
+    void parameterSet(const std::string &name)
+    {
+        setParams_.insert(name);
+        setup_ = false;
+    }
+    /// Parameters that act only on the grid lattice (the papers' searches on the map's cells):
+    /// setup() refuses them, set explicitly, on a planner configured for the car lattice.
+    virtual std::vector<std::string> gridLatticeOnlyParams() const { return {"allow_corner_cutting"}; }
+    /// Parameters that act only on the car lattice: setup() refuses them on the grid lattice.
+    virtual std::vector<std::string> carLatticeOnlyParams() const { return {"headings", "heuristic_weight"}; }
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).
     void markNotExact(const std::string &why) { notExactBecause_ = why; }
@@ -235,6 +257,9 @@ private:
     bool memoryStopped_{false};
     std::string lastStopReason_;
     std::string notExactBecause_;  ///< set through markNotExact() during one solve()
+    std::set<std::string> setParams_;  ///< every parameter set explicitly (parameterSet())
+    /// std::invalid_argument naming a parameter set explicitly that does not act as configured.
+    void checkParametersAct() const;
     bool allowCornerCutting_{false};
     bool matchGoalHeading_{false};
     bool freeStartHeading_{false};

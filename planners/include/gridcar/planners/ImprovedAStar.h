@@ -88,10 +88,20 @@ public:
     std::string contour() const { return points_ ? "points" : "fcl"; }
     void setContour(const std::string &c);
     bool smooth() const { return smooth_; }
-    void setSmooth(bool s) { smooth_ = s; }
-    std::string lattice() const { return car_ ? "car" : "grid"; }
+    void setSmooth(bool s)
+    {
+        smooth_ = s;
+        parameterSet("smooth");
+    }
+    std::string lattice() const { return carLattice_ ? "car" : "grid"; }
     void setLattice(const std::string &l);
-    bool usesCarLattice() const override { return car_; }
+    bool usesCarLattice() const override { return carLattice_; }
+    /// heuristic, smooth and contour are the grid search's (paper I's section 3), refused on
+    /// the car lattice, with allow_corner_cutting.
+    std::vector<std::string> gridLatticeOnlyParams() const override
+    {
+        return {"allow_corner_cutting", "heuristic", "smooth", "contour"};
+    }
 
     /// Paper I's evaluation, eq. 4-5: f = g' + h (1 + o) + s with g' = g if g < o, else 0;
     /// s = 0 (successors with s = infinity are never generated).
@@ -109,14 +119,14 @@ public:
     const SmoothingResult &lastSmoothing() const override
     {
         static const SmoothingResult none;
-        return car_ ? none : lastSmoothing_;
+        return carLattice_ ? none : lastSmoothing_;
     }
     /// The lattice path of the last solve() before post-processing (world poses).
     const std::vector<Pose2> &lastLatticePath() const { return latticePath_; }
     const std::vector<Pose2> &lastRawPath() const override
     {
         static const std::vector<Pose2> none;
-        return !car_ && smooth_ && !lastSmoothing_.path.empty() ? latticePath_ : none;
+        return !carLattice_ && smooth_ && !lastSmoothing_.path.empty() ? latticePath_ : none;
     }
 
 protected:
@@ -136,7 +146,7 @@ private:
     friend struct ImprovedExpander;
     mutable ompl::base::State *obstacleScratch_{nullptr};
     bool paperMode_{true};
-    bool car_{true};
+    bool carLattice_{true};
     std::string heuristic_{"auto"};
     double delta_{1.0};
     bool voronoi_{false};

@@ -4,12 +4,31 @@
 
 #include <ompl/base/Planner.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace gridcar
 {
-/// dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar, improved-astar.
+/// One named planner configuration of the registry.
+struct PlannerEntry
+{
+    std::string name;
+    std::string description;  ///< one line
+    bool ours{false};         ///< gridcar's (a GridPlanner) or OMPL's
+    std::function<ompl::base::PlannerPtr(const ompl::base::SpaceInformationPtr &)> make;
+};
+
+/// Every planner by name, in one table: gridcar's (the grid searches, corner-astar and
+/// improved-astar on the car lattice, the papers' searches on the map's cells as
+/// corner-astar-grid and improved-astar-grid) and OMPL's. A new planner is one entry here.
+const std::vector<PlannerEntry> &plannerRegistry();
+
+/// The registry's entry of @p name (no suffix), or null.
+const PlannerEntry *findPlanner(const std::string &name);
+
+/// dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar, improved-astar,
+/// corner-astar-grid, improved-astar-grid.
 std::vector<std::string> gridPlannerNames();
 /// rrt, rrtconnect, rrtstar, prm, prmstar, lazyprmstar, bitstar, informedrrtstar.
 std::vector<std::string> omplPlannerNames();

@@ -4,7 +4,7 @@
 #include "gridcar/bench/Format.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 
 #include <cmath>

@@ -1,6 +1,7 @@
 // gridcar vehicle: a vehicle's parameters and what follows from them.
 #include "Cli.h"
 
+#include "gridcar/planners/CornerWeights.h"
 #include "gridcar/vehicle/Dynamics.h"
 
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 // follower in the kinematic simulation, with optional moving obstacles.
 #include "Cli.h"
 
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 #include "gridcar/render/Render.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"

@@ -1,7 +1,7 @@
 // gridcar plan: one query with any planner; the path as text, JSON, CSV and a picture.
 #include "Cli.h"
 
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 #include "gridcar/render/Render.h"
 
 #include <ompl/util/Console.h>

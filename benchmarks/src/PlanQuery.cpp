@@ -1,4 +1,4 @@
-#include "gridcar/planners/PlanQuery.h"
+#include "gridcar/bench/PlanQuery.h"
 
 #include "gridcar/core/Errors.h"
 #include "gridcar/planners/GridPlanner.h"

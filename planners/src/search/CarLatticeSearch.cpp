@@ -196,8 +196,10 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
     }
     std::sort(cand.begin(), cand.end());
     if (cand.size() > (near ? 3u : 1u)) cand.resize(near ? 3u : 1u);
-    for (const auto &[len, index] : cand)
+    for (const auto &candidate : cand)
     {
+        const double len = candidate.first;  // a plain variable: lambdas may capture it (C++17)
+        const double index = candidate.second;
         ++shotsTried_;
         const CarCurve &path = curves[std::size_t(index)];
         const double y = curveYaw[std::size_t(index)];

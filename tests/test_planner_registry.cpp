@@ -1,0 +1,147 @@
+// The planner registry (planners/PlannerFactory.h) and how parameters act: the papers' searches
+// under names of their own, the old switches as aliases, a parameter that does not act in the
+// planner as configured refused with the reason, and a parameter acting the same whether it is
+// set before or after setup().
+#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/planners/CornerAStar.h"
+#include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/spaces/Setup.h"
+#include "PlannerTestUtil.h"
+
+#include <gtest/gtest.h>
+
+#include <ompl/util/Console.h>
+
+using namespace gridcar;
+using namespace gridcar::test;
+namespace ob = ompl::base;
+
+namespace
+{
+/// 40 m x 30 m at 0.25 m with two walls: corners to take.
+std::shared_ptr<const OccupancyGrid> wallsMap()
+{
+    auto g = std::make_shared<OccupancyGrid>(160, 120, 0.25, CellState::Free);
+    for (int r = 30; r < 120; ++r)
+        for (int c = 50; c < 53; ++c) g->set(c, r, CellState::Occupied);
+    for (int r = 0; r < 90; ++r)
+        for (int c = 105; c < 108; ++c) g->set(c, r, CellState::Occupied);
+    return g;
+}
+
+/// Length of the planner's exact solution (-1 if none).
+double lengthOf(GridSetup &s, const ob::PlannerPtr &p)
+{
+    s.ss->clear();
+    s.ss->setPlanner(p);
+    s.setStartAndGoal({3, 3, 0}, {37, 27, 0});
+    if (s.ss->solve(10.0) != ob::PlannerStatus::EXACT_SOLUTION) return -1.0;
+    return s.ss->getSolutionPath().length();
+}
+}  // namespace
+
+TEST(PlannerRegistry, EveryNameHasOneEntryWithADescription)
+{
+    const auto &reg = plannerRegistry();
+    EXPECT_EQ(reg.size(), plannerNames().size());
+    EXPECT_EQ(gridPlannerNames().size() + omplPlannerNames().size(), reg.size());
+    for (const PlannerEntry &e : reg)
+    {
+        EXPECT_FALSE(e.description.empty()) << e.name;
+        EXPECT_EQ(findPlanner(e.name), &e);
+        EXPECT_TRUE(isPlannerName(e.name + "+smooth"));
+    }
+    EXPECT_EQ(findPlanner("no-such-planner"), nullptr);
+    GridSetup s = testSetup("point");
+    EXPECT_THROW(makePlanner(s.ss->getSpaceInformation(), "no-such-planner"), std::invalid_argument);
+    EXPECT_EQ(makePlanner(s.ss->getSpaceInformation(), "corner-astar-grid")->getName(), "corner-astar-grid");
+}
+
+TEST(PlannerRegistry, ThePapersSearchesHaveNamesAndTheOldSwitchesStayAliases)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    GridSetup s = makeGridSetup(wallsMap(), VehicleParams::preset("paper-c-robot"));
+    const auto &si = s.ss->getSpaceInformation();
+    const double grid = lengthOf(s, makePlanner(si, "corner-astar-grid"));
+    ASSERT_GT(grid, 0);
+    EXPECT_DOUBLE_EQ(lengthOf(s, configurePlanner(si, {"corner-astar", {{"mode", "paper"}}, false, false})), grid);
+    EXPECT_DOUBLE_EQ(lengthOf(s, configurePlanner(si, {"corner-astar", {{"lattice", "grid"}}, false, false})), grid);
+    const double car = lengthOf(s, makePlanner(si, "corner-astar"));
+    EXPECT_DOUBLE_EQ(lengthOf(s, configurePlanner(si, {"corner-astar", {{"lattice", "car"}}, false, false})), car);
+    const double igrid = lengthOf(s, makePlanner(si, "improved-astar-grid"));
+    ASSERT_GT(igrid, 0);
+    EXPECT_DOUBLE_EQ(lengthOf(s, configurePlanner(si, {"improved-astar", {{"lattice", "grid"}}, false, false})), igrid);
+}
+
+TEST(PlannerRegistry, AParameterThatDoesNotActIsRefusedWithTheReason)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    GridSetup s = makeGridSetup(wallsMap(), VehicleParams::preset("paper-c-robot"));
+    const auto &si = s.ss->getSpaceInformation();
+    // grid-lattice parameters on the car lattice, and car-lattice ones on the grid lattice:
+    // they used to be accepted and ignored
+    const std::vector<std::pair<std::string, PlannerParams>> refused{
+        {"improved-astar", {{"heuristic", "euclidean"}}},
+        {"improved-astar", {{"smooth", "0"}}},
+        {"improved-astar", {{"contour", "points"}}},
+        {"improved-astar", {{"allow_corner_cutting", "1"}}},
+        {"corner-astar", {{"allow_corner_cutting", "1"}}},
+        {"corner-astar-grid", {{"headings", "8"}}},
+        {"corner-astar", {{"lattice", "grid"}, {"heuristic_weight", "1.5"}}},
+        {"improved-astar-grid", {{"headings", "8"}}},
+    };
+    for (const auto &c : refused)
+    {
+        std::string label = c.first;
+        for (const auto &kv : c.second) label += " " + kv.first + "=" + kv.second;
+        SCOPED_TRACE(label);
+        auto p = configurePlanner(si, {c.first, c.second, false, false});
+        p->setProblemDefinition(s.ss->getProblemDefinition());
+        try
+        {
+            p->setup();
+            ADD_FAILURE() << "accepted";
+        }
+        catch (const std::invalid_argument &e)
+        {
+            EXPECT_NE(std::string(e.what()).find(c.second.back().first), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("lattice"), std::string::npos) << e.what();
+        }
+    }
+    // the same parameters where they act are fine, in either order
+    for (const auto &c : std::vector<std::pair<std::string, PlannerParams>>{
+             {"improved-astar", {{"heuristic", "euclidean"}, {"lattice", "grid"}}},
+             {"improved-astar-grid", {{"smooth", "0"}, {"contour", "points"}}},
+             {"corner-astar", {{"headings", "8"}, {"heuristic_weight", "1.5"}}},
+             {"corner-astar-grid", {{"allow_corner_cutting", "1"}}}})
+    {
+        auto p = configurePlanner(si, {c.first, c.second, false, false});
+        p->setProblemDefinition(s.ss->getProblemDefinition());
+        EXPECT_NO_THROW(p->setup()) << c.first;
+    }
+}
+
+TEST(PlannerRegistry, AWeightActsTheSameSetBeforeOrAfterSetup)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    GridSetup s = makeGridSetup(wallsMap(), VehicleParams::preset("paper-c-robot"));
+    const auto &si = s.ss->getSpaceInformation();
+    for (const char *lattice : {"car", "grid"})
+    {
+        SCOPED_TRACE(lattice);
+        // weights=physics with one weight of the user's: before setup() ...
+        auto before = configurePlanner(si, {"corner-astar", {{"lattice", lattice}, {"weights", "physics"}, {"corner_weight_45", "0.5"}}, false, false});
+        const double lBefore = lengthOf(s, before);
+        // ... and after it (the planner set up and used first)
+        auto after = configurePlanner(si, {"corner-astar", {{"lattice", lattice}, {"weights", "physics"}}, false, false});
+        const double lPhysics = lengthOf(s, after);
+        ASSERT_TRUE(after->params().setParam("corner_weight_45", "0.5"));
+        const double lAfter = lengthOf(s, after);
+        ASSERT_GT(lBefore, 0);
+        EXPECT_DOUBLE_EQ(lAfter, lBefore);
+        const auto &w = std::static_pointer_cast<CornerAStar>(after)->weights();
+        EXPECT_EQ(w.w45, 0.5);
+        EXPECT_EQ(w.w90, physicsCornerWeights(s.checker->vehicle()).w90) << "the others from physics";
+        (void)lPhysics;
+    }
+}
