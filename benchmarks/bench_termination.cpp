@@ -29,20 +29,13 @@ namespace
 {
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-/// Every planner name with the configurations worth timing apart.
-std::vector<std::pair<std::string, PlannerParams>> configurations()
+/// Every configuration (PlanQuery.h), and the car lattice at the map's own 0.05 m: slow
+/// enough to run into the limits.
+std::vector<NamedConfiguration> configurations()
 {
-    std::vector<std::pair<std::string, PlannerParams>> out;
-    for (const auto &n : plannerNames()) out.push_back({n, {}});
-    // the car lattice at the map's own 0.05 m: slow enough to run into the limits
+    std::vector<NamedConfiguration> out = everyConfiguration();
     out.push_back({"corner-astar", {{"lattice_cell", "0.05"}}});
     out.push_back({"improved-astar", {{"lattice_cell", "0.05"}}});
-    out.push_back({"corner-astar", {{"mode", "paper"}}});
-    out.push_back({"improved-astar", {{"lattice", "grid"}}});
-    out.push_back({"improved-astar", {{"lattice", "grid"}, {"mode", "integral"}}});
-    out.push_back({"astar-octile+smooth", {}});
-    out.push_back({"rrtconnect+smooth", {}});
-    out.push_back({"rrtconnect+simplify", {}});
     return out;
 }
 
@@ -52,13 +45,6 @@ bool isOurs(const std::string &name)
     for (const auto &n : gridPlannerNames())
         if (n == base) return true;
     return false;
-}
-
-std::string label(const std::pair<std::string, PlannerParams> &c)
-{
-    std::string s = c.first;
-    for (const auto &kv : c.second) s += " " + kv.first + "=" + kv.second;
-    return s;
 }
 
 /// Seeded poses where the car fits with half a body width of room on each side.
@@ -88,7 +74,7 @@ enum class Mode
 
 /// Seconds from the limit (or the cancel) to solve()'s return; NaN when it returned before it
 /// (solved, or the search exhausted what it could reach).
-double lateness(GridSetup &s, const std::pair<std::string, PlannerParams> &c, const Pose2 &a, const Pose2 &b,
+double lateness(GridSetup &s, const NamedConfiguration &c, const Pose2 &a, const Pose2 &b,
                 double limit, Mode mode)
 {
     s.ss->clear();
@@ -186,8 +172,8 @@ int main(int argc, char **argv)
     double worstOurs = 0, worstAll = 0;
     for (const auto &c : configurations())
     {
-        if (!only.empty() && label(c).find(only) == std::string::npos) continue;
-        std::printf("| %s |", label(c).c_str());
+        if (!only.empty() && configurationLabel(c).find(only) == std::string::npos) continue;
+        std::printf("| %s |", configurationLabel(c).c_str());
         for (const Case &k : cases)
             for (std::size_t m = 0; m < std::size(modes); ++m)
             {
@@ -197,7 +183,7 @@ int main(int argc, char **argv)
                     const double l = lateness(*k.setup, c, start, k.goal, k.limit, modes[m]);
                     if (!std::isnan(l)) worst = std::isnan(worst) ? l : std::max(worst, l);
                 }
-                std::fprintf(stderr, "%-36s %-13s %-15s %s\n", label(c).c_str(), k.name, modeNames[m],
+                std::fprintf(stderr, "%-36s %-13s %-15s %s\n", configurationLabel(c).c_str(), k.name, modeNames[m],
                              std::isnan(worst) ? "returned before" : (std::to_string(int(std::lround(worst * 1000))) + " ms").c_str());
                 if (std::isnan(worst)) std::printf(" - |");
                 else std::printf(" %.0f |", worst * 1000);

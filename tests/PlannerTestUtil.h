@@ -34,6 +34,24 @@ inline GridSetup testSetup(const std::string &vehicle = "point")
     return makeGridSetup(testMap(), VehicleParams::preset(vehicle));
 }
 
+/// 60 m x 40 m at 0.2 m, free but for a wall at x = 30 m from y = 0 to y = 28 m (the car
+/// spaces' tests go round it).
+inline std::shared_ptr<OccupancyGrid> wallMap()
+{
+    auto g = std::make_shared<OccupancyGrid>(300, 200, 0.2, CellState::Free);
+    for (int r = 60; r < 200; ++r)
+        for (int c = 150; c < 153; ++c) g->set(c, r, CellState::Occupied);
+    return g;
+}
+
+/// wallMap() with paper I's car on a space of the given kind.
+inline GridSetup carSetup(SpaceKind kind)
+{
+    SetupOptions o;
+    o.space = kind;
+    return makeGridSetup(wallMap(), VehicleParams::preset("paper-i"), o);
+}
+
 inline Pose2 cellPose(const OccupancyGrid &g, int c, int r, double yaw = 0.0) { return {g.cellCenterX(c), g.cellCenterY(r), yaw}; }
 
 inline bool isGrid(const std::string &name)

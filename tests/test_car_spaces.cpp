@@ -8,6 +8,7 @@
 #include "gridcar/spaces/CarSpaces.h"
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"
+#include "PlannerTestUtil.h"
 #include "gridcar/vehicle/Dynamics.h"
 
 #include <gtest/gtest.h>
@@ -18,25 +19,7 @@
 #include <memory>
 
 using namespace gridcar;
-
-namespace
-{
-/// 60 m x 40 m at 0.2 m, free but for a wall at x = 30 m from y = 0 to y = 28 m.
-std::shared_ptr<OccupancyGrid> wallMap()
-{
-    auto g = std::make_shared<OccupancyGrid>(300, 200, 0.2, CellState::Free);
-    for (int r = 60; r < 200; ++r)
-        for (int c = 150; c < 153; ++c) g->set(c, r, CellState::Occupied);
-    return g;
-}
-
-GridSetup carSetup(SpaceKind kind)
-{
-    SetupOptions o;
-    o.space = kind;
-    return makeGridSetup(wallMap(), VehicleParams::preset("paper-i"), o);
-}
-}  // namespace
+using namespace gridcar::test;
 
 TEST(CarSpaces, NamesAndMisuse)
 {

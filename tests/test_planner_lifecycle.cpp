@@ -21,21 +21,12 @@ namespace ob = ompl::base;
 
 namespace
 {
-/// Our planners in every configuration a user can pick.
-std::vector<std::pair<std::string, PlannerParams>> ourConfigurations()
+/// Our planners: every name of the registry's gridcar part (the papers' searches included).
+std::vector<NamedConfiguration> ourConfigurations()
 {
-    std::vector<std::pair<std::string, PlannerParams>> out;
+    std::vector<NamedConfiguration> out;
     for (const auto &n : gridPlannerNames()) out.push_back({n, {}});
-    out.push_back({"corner-astar", {{"mode", "paper"}}});
-    out.push_back({"improved-astar", {{"lattice", "grid"}}});
     return out;
-}
-
-std::string label(const std::pair<std::string, PlannerParams> &c)
-{
-    std::string s = c.first;
-    for (const auto &kv : c.second) s += " " + kv.first + "=" + kv.second;
-    return s;
 }
 
 /// 40 m x 30 m at 0.25 m, free; with @p wall, a wall at x = 20 m from y = 0 to y = 20 m.
@@ -57,7 +48,7 @@ TEST(PlannerLifecycle, SolveAgainWithoutClearAnswersTheProblem)
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     for (const auto &c : ourConfigurations())
     {
-        SCOPED_TRACE(label(c));
+        SCOPED_TRACE(configurationLabel(c));
         GridSetup s = makeGridSetup(openMap(false), VehicleParams::preset("paper-c-robot"));
         s.ss->setPlanner(configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, false, false}));
         s.setStartAndGoal({5, 5, 0}, {35, 25, 0});
@@ -76,7 +67,7 @@ TEST(PlannerLifecycle, ANewMapSetOnTheSpaceInformationIsNoticed)
     for (const auto &c : ourConfigurations())
         for (bool callSetup : {false, true})
         {
-            SCOPED_TRACE(label(c) + (callSetup ? " with setup()" : " without setup()"));
+            SCOPED_TRACE(configurationLabel(c) + (callSetup ? " with setup()" : " without setup()"));
             GridSetup s = makeGridSetup(openMap(false), car);
             const auto &si = s.ss->getSpaceInformation();
             s.ss->setPlanner(configurePlanner(si, {c.first, c.second, false, false}));

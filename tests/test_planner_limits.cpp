@@ -26,27 +26,6 @@ namespace ob = ompl::base;
 
 namespace
 {
-/// Every planner name with the configurations worth timing apart.
-std::vector<std::pair<std::string, PlannerParams>> allConfigurations()
-{
-    std::vector<std::pair<std::string, PlannerParams>> out;
-    for (const auto &n : plannerNames()) out.push_back({n, {}});
-    out.push_back({"corner-astar", {{"mode", "paper"}}});
-    out.push_back({"improved-astar", {{"lattice", "grid"}}});
-    out.push_back({"improved-astar", {{"lattice", "grid"}, {"mode", "integral"}}});
-    out.push_back({"astar-octile+smooth", {}});
-    out.push_back({"rrtconnect+smooth", {}});
-    out.push_back({"rrtconnect+simplify", {}});
-    return out;
-}
-
-std::string label(const std::pair<std::string, PlannerParams> &c)
-{
-    std::string s = c.first;
-    for (const auto &kv : c.second) s += " " + kv.first + "=" + kv.second;
-    return s;
-}
-
 /// A 5500 x 4416-cell campus (24.3 M cells, the Tsudanuma map's size) with the goal in a walled
 /// yard: no search can reach it, so every planner runs until it is stopped.
 GridSetup bigSetup(Pose2 &start, Pose2 &goal)
@@ -86,7 +65,7 @@ TEST(PlannerLimits, TimeLimitIsHonouredOn24MCellsByEveryPlanner)
     ASSERT_TRUE(s.checker->isValid(start) && s.checker->isValid(goal));
     const double limit = 0.2;
     double worst = 0;
-    auto configs = allConfigurations();
+    auto configs = everyConfiguration();
     // the car lattice at the map's own cells: slow enough to run into the limit
     configs.push_back({"corner-astar", {{"lattice_cell", "0.298"}}});
     configs.push_back({"improved-astar", {{"lattice_cell", "0.298"}}});
@@ -127,9 +106,9 @@ TEST(PlannerLimits, TimeLimitIsHonouredOn24MCellsByEveryPlanner)
                 }
             }
             worst = std::max(worst, late);
-            std::printf("%-40s %-15s %s, %+.3f s after the limit\n", label(c).c_str(), mode, st.asString().c_str(), late);
-            EXPECT_LT(late, 0.05) << label(c) << " " << mode;
-            EXPECT_NE(st, ob::PlannerStatus::EXACT_SOLUTION) << label(c) << ": the goal is walled in";
+            std::printf("%-40s %-15s %s, %+.3f s after the limit\n", configurationLabel(c).c_str(), mode, st.asString().c_str(), late);
+            EXPECT_LT(late, 0.05) << configurationLabel(c) << " " << mode;
+            EXPECT_NE(st, ob::PlannerStatus::EXACT_SOLUTION) << configurationLabel(c) << ": the goal is walled in";
         }
     std::printf("worst lateness %.3f s\n", worst);
 }
@@ -140,10 +119,10 @@ TEST(PlannerLimits, SmoothingStoppedByTheConditionIsNoExactSolution)
     // a condition that is already true: the smoothing after it must stop, and the path it did
     // not finish is no exact solution
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    for (const std::pair<std::string, PlannerParams> &c :
-         std::vector<std::pair<std::string, PlannerParams>>{{"improved-astar", {{"lattice", "grid"}}}, {"astar-octile+smooth", {}}})
+    for (const NamedConfiguration &c :
+         std::vector<NamedConfiguration>{{"improved-astar-grid", {}}, {"astar-octile+smooth", {}}})
     {
-        SCOPED_TRACE(label(c));
+        SCOPED_TRACE(configurationLabel(c));
         GridSetup s = testSetup("paper-c-robot");
         const OccupancyGrid &g = *s.grid;
         s.ss->setPlanner(configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, false, false}));
@@ -163,12 +142,12 @@ TEST(PlannerLimits, MemoryBoundStopsEveryGridPlannerWithAReason)
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     GridSetup s = testSetup("paper-c-robot");
     const OccupancyGrid &g = *s.grid;
-    for (const auto &c : allConfigurations())
+    for (const auto &c : everyConfiguration())
     {
         if (!isGrid(c.first)) continue;
         for (const char *bound : {"1", "0"})
         {
-            SCOPED_TRACE(label(c) + " max_memory_mb=" + bound);
+            SCOPED_TRACE(configurationLabel(c) + " max_memory_mb=" + bound);
             PlannerParams params = c.second;
             params.push_back({"max_memory_mb", bound});
             auto planner = configurePlanner(s.ss->getSpaceInformation(), {c.first, params, true, false});
@@ -203,10 +182,10 @@ TEST(PlannerLimits, StartEqualToGoalIsAnExactSolutionOfOnePoseOrTwo)
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     GridSetup s = testSetup("paper-c-robot");
     const Pose2 p = cellPose(*s.grid, 10, 20);
-    for (const auto &c : allConfigurations())
+    for (const auto &c : everyConfiguration())
     {
         if (!isGrid(c.first)) continue;
-        SCOPED_TRACE(label(c));
+        SCOPED_TRACE(configurationLabel(c));
         auto planner = configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, false, false});
         const QueryResult q = runQuery(s, planner, p, p, 5.0);
         EXPECT_EQ(q.status, ob::PlannerStatus::EXACT_SOLUTION);
@@ -244,7 +223,7 @@ TEST(PlannerLimits, NoSmoothedPathThatIsNotDrivableIsAnExactSolution)
         for (const auto &c : std::vector<std::pair<std::string, PlannerParams>>{
                  {"astar-octile+smooth", {}}, {"improved-astar", {{"lattice", "grid"}}}, {"rrtconnect+smooth", {}}})
         {
-            SCOPED_TRACE(label(c) + " query " + std::to_string(k));
+            SCOPED_TRACE(configurationLabel(c) + " query " + std::to_string(k));
             auto planner = configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, true, false});
             const QueryResult q = runQuery(s, planner, a, b, 5.0);
             if (q.status == ob::PlannerStatus::EXACT_SOLUTION)

@@ -32,6 +32,16 @@ bool pathValid(const FootprintChecker &c, const std::vector<Pose2> &p)
         if (!c.isMotionValid(p[i - 1], p[i])) return false;
     return true;
 }
+
+/// An L-shaped grid path round the block corner of blockSetup(), one pose per cell.
+std::vector<Pose2> roundTheBlock(const OccupancyGrid &g)
+{
+    std::vector<Pose2> path;
+    for (int c = 5; c <= 20; ++c) path.push_back({g.cellCenterX(c), g.cellCenterY(70), 0});
+    for (int r = 69; r >= 12; --r) path.push_back({g.cellCenterX(20), g.cellCenterY(r), M_PI / 2});
+    for (int c = 21; c <= 70; ++c) path.push_back({g.cellCenterX(c), g.cellCenterY(12), 0});
+    return path;
+}
 }  // namespace
 
 TEST(PostProcess, ParabolaCurvatureByHand)
@@ -86,11 +96,7 @@ TEST(PostProcess, SmoothedPathIsCollisionFreeAndWithinKmaxWhereAdjusted)
 {
     GridSetup s = blockSetup();
     const auto &g = *s.grid;
-    // an L-shaped grid path round the block corner, one pose per cell
-    std::vector<Pose2> path;
-    for (int c = 5; c <= 20; ++c) path.push_back({g.cellCenterX(c), g.cellCenterY(70), 0});
-    for (int r = 69; r >= 12; --r) path.push_back({g.cellCenterX(20), g.cellCenterY(r), M_PI / 2});
-    for (int c = 21; c <= 70; ++c) path.push_back({g.cellCenterX(c), g.cellCenterY(12), 0});
+    const std::vector<Pose2> path = roundTheBlock(g);
     ASSERT_TRUE(pathValid(*s.checker, path));
     const double kmax = s.checker->vehicle().maxCurvature();
     SmoothingParams prm;
@@ -116,10 +122,7 @@ TEST(PostProcess, ACancelStopsTheSmoothingAndReturnsTheInput)
 {
     GridSetup s = blockSetup();
     const auto &g = *s.grid;
-    std::vector<Pose2> path;
-    for (int c = 5; c <= 20; ++c) path.push_back({g.cellCenterX(c), g.cellCenterY(70), 0});
-    for (int r = 69; r >= 12; --r) path.push_back({g.cellCenterX(20), g.cellCenterY(r), M_PI / 2});
-    for (int c = 21; c <= 70; ++c) path.push_back({g.cellCenterX(c), g.cellCenterY(12), 0});
+    const std::vector<Pose2> path = roundTheBlock(g);
     SmoothingParams prm;
     prm.lineOfSight = false;
     int calls = 0, callsAfterTrue = 0;

@@ -63,6 +63,22 @@ ompl::base::PlannerPtr configurePlanner(const ompl::base::SpaceInformationPtr &s
     return planner;
 }
 
+std::vector<NamedConfiguration> everyConfiguration()
+{
+    std::vector<NamedConfiguration> out;
+    for (const auto &n : plannerNames()) out.push_back({n, {}});
+    out.push_back({"improved-astar-grid", {{"mode", "integral"}}});
+    for (const char *n : {"astar-octile+smooth", "rrtconnect+smooth", "rrtconnect+simplify"}) out.push_back({n, {}});
+    return out;
+}
+
+std::string configurationLabel(const NamedConfiguration &c)
+{
+    std::string s = c.first;
+    for (const auto &kv : c.second) s += " " + kv.first + "=" + kv.second;
+    return s;
+}
+
 double progressValue(const ompl::base::Planner &planner, const std::string &property)
 {
     const auto &props = planner.getPlannerProgressProperties();

@@ -1,6 +1,6 @@
 #include "gridcar/planners/GridPlanner.h"
 
-#include "gridcar/path/Drivability.h"
+#include "gridcar/planners/SmoothedPlanner.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/PlannerData.h>
@@ -321,13 +321,11 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     else if (replaced && exact && checker_)
     {
         // a smoothed path is a drivable solution only if the independent check says so
-        DrivabilityOptions check;
-        check.cancelled = [&ptc] { return ptc.eval(); };
-        const Drivability d = checkDrivable(toPoses(*path), *checker_, check);
-        if (!d.drivable)
+        const std::string why = smoothedPathVerdict(toPoses(*path), *checker_, ptc);
+        if (!why.empty())
         {
             exactAndDrivable = false;
-            lastStopReason_ = "the smoothed path is not drivable: " + d.reason;
+            lastStopReason_ = "the smoothed path is not drivable: " + why;
             OMPL_WARN("%s: %s", getName().c_str(), lastStopReason_.c_str());
         }
     }

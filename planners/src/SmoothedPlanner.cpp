@@ -24,6 +24,15 @@ SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, co
     return res;
 }
 
+std::string smoothedPathVerdict(const std::vector<Pose2> &path, const FootprintChecker &checker,
+                                const ompl::base::PlannerTerminationCondition &ptc)
+{
+    DrivabilityOptions check;
+    check.cancelled = [&ptc] { return ptc.eval(); };
+    const Drivability d = checkDrivable(path, checker, check);
+    return d.drivable ? std::string() : d.reason;
+}
+
 SmoothedPlanner::SmoothedPlanner(ompl::base::PlannerPtr inner, Method method)
   : ompl::base::Planner(inner->getSpaceInformation(),
                         inner->getName() + (method == Method::PaperI ? "+smooth" : "+simplify"))
@@ -105,15 +114,12 @@ ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTermin
     if (st == ompl::base::PlannerStatus::EXACT_SOLUTION)
     {
         // an exact solution stays exact only if the smoothed path passes the independent check
-        DrivabilityOptions check;
-        check.cancelled = [&ptc] { return ptc.eval(); };
-        const Drivability d = checkDrivable(last_.path, vc->checker(), check);
-        if (!d.drivable)
+        last_.notDrivable = smoothedPathVerdict(last_.path, vc->checker(), ptc);
+        if (!last_.notDrivable.empty())
         {
-            last_.notDrivable = d.reason;
             approximate = true;
             result = ompl::base::PlannerStatus::APPROXIMATE_SOLUTION;
-            OMPL_WARN("%s: the smoothed path is not drivable: %s", getName().c_str(), d.reason.c_str());
+            OMPL_WARN("%s: the smoothed path is not drivable: %s", getName().c_str(), last_.notDrivable.c_str());
         }
     }
     pdef->clearSolutionPaths();

@@ -14,19 +14,6 @@ using ompl::base::DubinsStateSpace;
 using ompl::base::ReedsSheppStateSpace;
 using SE2State = ompl::base::SE2StateSpace::StateType;
 
-Pose2 poseOf(const ompl::base::State *s)
-{
-    const auto *st = s->as<SE2State>();
-    return {st->getX(), st->getY(), st->getYaw()};
-}
-
-void setState(ompl::base::State *s, const Pose2 &p)
-{
-    auto *st = s->as<SE2State>();
-    st->setXY(p.x, p.y);
-    st->setYaw(wrapYaw(p.yaw));
-}
-
 /// The radius OMPL 1.5.2 keeps protected, read through a pointer to the member formed in a
 /// derived class (legal C++: the access check is on the naming class).
 struct DubinsRadius : DubinsStateSpace
@@ -50,139 +37,82 @@ ReedsSheppStateSpace::ReedsSheppPathSegmentType rsOfSteer(Steer s)
 {
     return s == Steer::Left ? ReedsSheppStateSpace::RS_LEFT : s == Steer::Right ? ReedsSheppStateSpace::RS_RIGHT : ReedsSheppStateSpace::RS_STRAIGHT;
 }
-
-/// Interpolation along @p c from @p from: t in [0, 1] of its length; the end states exactly.
-void interpolateCurve(const ompl::base::StateSpace &space, const ompl::base::State *from, const ompl::base::State *to,
-                      const CarCurve &c, double t, ompl::base::State *state)
-{
-    if (c.empty() || !(t > 0)) space.copyState(state, from);
-    else if (t >= 1 && to) space.copyState(state, to);
-    else setState(state, curvePose(poseOf(from), c, std::min(t, 1.0) * c.length));
-}
-
-void checkRadius(double r)
-{
-    if (!(r > 0) || !std::isfinite(r)) throw std::invalid_argument("a car space needs a turning radius > 0");
-}
 }  // namespace
 
-// ---------------------------------------------------------------- Dubins
-
-DubinsSpace::DubinsSpace(double turningRadius) : DubinsStateSpace(turningRadius, false)
+Pose2 poseOfSE2(const ompl::base::State *s)
 {
-    checkRadius(turningRadius);
-    setName("GridcarDubins" + getName());
+    const auto *st = s->as<SE2State>();
+    return {st->getX(), st->getY(), st->getYaw()};
 }
 
-CarCurve DubinsSpace::curve(const ompl::base::State *from, const ompl::base::State *to) const
+void setSE2(ompl::base::State *s, const Pose2 &p)
 {
-    return dubinsCurve(poseOf(from), poseOf(to), rho_);
+    auto *st = s->as<SE2State>();
+    st->setXY(p.x, p.y);
+    st->setYaw(wrapYaw(p.yaw));
 }
 
-double DubinsSpace::distance(const ompl::base::State *a, const ompl::base::State *b) const { return curve(a, b).length; }
-
-void DubinsSpace::interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
-                              ompl::base::State *state) const
+DubinsStateSpace::DubinsPath DubinsCodec::toPath(const CarCurve &c, double radius)
 {
-    interpolateCurve(*this, from, to, curve(from, to), t, state);
-}
-
-void DubinsSpace::interpolate(const ompl::base::State *from, const ompl::base::State *to, double t, bool &firstTime,
-                              DubinsPath &path, ompl::base::State *state) const
-{
-    if (firstTime)
+    // the equal-poses curve (no segment) stays row 0 with lengths 0
+    DubinsStateSpace::DubinsPath path(DubinsStateSpace::dubinsPathType[0], 0.0, 0.0, 0.0);
+    for (int row = 0; row < 6 && c.count == 3; ++row)
     {
-        // the curve into OMPL's path record (its three-letter word, lengths in radii)
-        const CarCurve c = curve(from, to);
-        firstTime = false;
-        path.reverse_ = false;
-        path.type_ = dubinsPathType[0];
-        for (int i = 0; i < 3; ++i) path.length_[i] = 0.0;
-        for (int row = 0; row < 6 && c.count == 3; ++row)
-        {
-            bool same = true;
-            for (int i = 0; i < 3; ++i) same = same && dubinsPathType[row][i] == dubinsOfSteer(c.segments[std::size_t(i)].steer);
-            if (!same) continue;
-            path.type_ = dubinsPathType[row];
-            for (int i = 0; i < 3; ++i) path.length_[i] = c.segments[std::size_t(i)].length / rho_;
-        }
+        bool same = true;
+        for (int i = 0; i < 3; ++i)
+            same = same && DubinsStateSpace::dubinsPathType[row][i] == dubinsOfSteer(c.segments[std::size_t(i)].steer);
+        if (!same) continue;
+        path.type_ = DubinsStateSpace::dubinsPathType[row];
+        for (int i = 0; i < 3; ++i) path.length_[i] = c.segments[std::size_t(i)].length / radius;
     }
-    if (t >= 1) copyState(state, to);
-    else interpolate(from, path, t, state);
+    return path;
 }
 
-void DubinsSpace::interpolate(const ompl::base::State *from, const DubinsPath &path, double t, ompl::base::State *state) const
+CarCurve DubinsCodec::fromPath(const DubinsStateSpace::DubinsPath &p, double radius)
 {
     CarCurve c;
-    c.radius = rho_;
+    c.radius = radius;
     c.count = 3;
     c.length = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-        c.segments[std::size_t(i)] = {steerOfDubins(path.type_[i]), path.length_[i] * rho_};
-        c.length += path.length_[i] * rho_;
+        c.segments[std::size_t(i)] = {steerOfDubins(p.type_[i]), p.length_[i] * radius};
+        c.length += p.length_[i] * radius;
     }
-    interpolateCurve(*this, from, nullptr, c, t, state);
+    return c;
 }
 
-// ---------------------------------------------------------------- Reeds-Shepp
-
-ReedsSheppSpace::ReedsSheppSpace(double turningRadius) : ReedsSheppStateSpace(turningRadius)
+ReedsSheppStateSpace::ReedsSheppPath ReedsSheppCodec::toPath(const CarCurve &c, double radius)
 {
-    checkRadius(turningRadius);
-    setName("GridcarReedsShepp" + getName());
-}
-
-CarCurve ReedsSheppSpace::curve(const ompl::base::State *from, const ompl::base::State *to) const
-{
-    return reedsSheppCurve(poseOf(from), poseOf(to), rho_);
-}
-
-double ReedsSheppSpace::distance(const ompl::base::State *a, const ompl::base::State *b) const { return curve(a, b).length; }
-
-void ReedsSheppSpace::interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
-                                  ompl::base::State *state) const
-{
-    interpolateCurve(*this, from, to, curve(from, to), t, state);
-}
-
-void ReedsSheppSpace::interpolate(const ompl::base::State *from, const ompl::base::State *to, double t, bool &firstTime,
-                                  ReedsSheppPath &path, ompl::base::State *state) const
-{
-    if (firstTime)
+    double len[5] = {0, 0, 0, 0, 0};
+    for (int i = 0; i < c.count; ++i) len[i] = c.segments[std::size_t(i)].length / radius;
+    int found = 0;  // the equal-poses curve (no segment): row 0 with lengths 0
+    for (int row = 0; row < 18 && c.count > 0; ++row)
     {
-        // the curve into OMPL's path record: the row of its word in OMPL's table of 18
-        const CarCurve c = curve(from, to);
-        firstTime = false;
-        double len[5] = {0, 0, 0, 0, 0};
-        for (int i = 0; i < c.count; ++i) len[i] = c.segments[std::size_t(i)].length / rho_;
-        int found = 0;  // the equal-poses curve (no segment): row 0 with lengths 0
-        for (int row = 0; row < 18 && c.count > 0; ++row)
-        {
-            bool same = true;
-            for (int i = 0; i < 5; ++i)
-                same = same && reedsSheppPathType[row][i] == (i < c.count ? rsOfSteer(c.segments[std::size_t(i)].steer) : RS_NOP);
-            if (same) found = row;
-        }
-        path = ReedsSheppPath(reedsSheppPathType[found], len[0], len[1], len[2], len[3], len[4]);
+        bool same = true;
+        for (int i = 0; i < 5; ++i)
+            same = same && ReedsSheppStateSpace::reedsSheppPathType[row][i] ==
+                               (i < c.count ? rsOfSteer(c.segments[std::size_t(i)].steer) : ReedsSheppStateSpace::RS_NOP);
+        if (same) found = row;
     }
-    if (t >= 1) copyState(state, to);
-    else interpolate(from, path, t, state);
+    return ReedsSheppStateSpace::ReedsSheppPath(ReedsSheppStateSpace::reedsSheppPathType[found], len[0], len[1], len[2], len[3],
+                                                len[4]);
 }
 
-void ReedsSheppSpace::interpolate(const ompl::base::State *from, const ReedsSheppPath &path, double t,
-                                  ompl::base::State *state) const
+CarCurve ReedsSheppCodec::fromPath(const ReedsSheppStateSpace::ReedsSheppPath &p, double radius)
 {
     CarCurve c;
-    c.radius = rho_;
+    c.radius = radius;
     c.length = 0.0;
-    for (int i = 0; i < 5 && path.type_[i] != RS_NOP; ++i)
+    for (int i = 0; i < 5 && p.type_[i] != ReedsSheppStateSpace::RS_NOP; ++i)
     {
-        const Steer s = path.type_[i] == RS_LEFT ? Steer::Left : path.type_[i] == RS_RIGHT ? Steer::Right : Steer::Straight;
-        c.segments[std::size_t(c.count++)] = {s, path.length_[i] * rho_};
-        c.length += std::abs(path.length_[i]) * rho_;
+        const Steer s = p.type_[i] == ReedsSheppStateSpace::RS_LEFT ? Steer::Left
+                        : p.type_[i] == ReedsSheppStateSpace::RS_RIGHT ? Steer::Right
+                                                                        : Steer::Straight;
+        c.segments[std::size_t(c.count++)] = {s, p.length_[i] * radius};
+        c.length += std::abs(p.length_[i]) * radius;
     }
-    interpolateCurve(*this, from, nullptr, c, t, state);
+    return c;
 }
 
 // ---------------------------------------------------------------- any car space
@@ -198,9 +128,9 @@ bool carSpaceCurve(const ompl::base::StateSpace &space, const ompl::base::State 
                    CarCurve &curve)
 {
     if (dynamic_cast<const DubinsStateSpace *>(&space))
-        curve = dubinsCurve(poseOf(a), poseOf(b), carSpaceTurningRadius(space));
+        curve = dubinsCurve(poseOfSE2(a), poseOfSE2(b), carSpaceTurningRadius(space));
     else if (dynamic_cast<const ReedsSheppStateSpace *>(&space))
-        curve = reedsSheppCurve(poseOf(a), poseOf(b), carSpaceTurningRadius(space));
+        curve = reedsSheppCurve(poseOfSE2(a), poseOfSE2(b), carSpaceTurningRadius(space));
     else
         return false;
     return !curve.empty();
@@ -211,10 +141,10 @@ std::vector<Pose2> carSpacePoses(const ompl::base::StateSpace &space, const ompl
 {
     std::vector<Pose2> out;
     if (path.getStateCount() == 0) return out;
-    out.push_back(poseOf(path.getState(0)));
+    out.push_back(poseOfSE2(path.getState(0)));
     for (std::size_t i = 1; i < path.getStateCount(); ++i)
     {
-        const Pose2 a = poseOf(path.getState(i - 1)), b = poseOf(path.getState(i));
+        const Pose2 a = poseOfSE2(path.getState(i - 1)), b = poseOfSE2(path.getState(i));
         CarCurve c;
         if (!carSpaceCurve(space, path.getState(i - 1), path.getState(i), c) || !(c.length > 0)) continue;
         std::vector<double> at;

@@ -63,9 +63,10 @@ struct CarExpander
     bool isGoal(std::uint32_t s)
     {
         ++expansions;
-        if (S.query_.inGoal && S.query_.inGoal(poseOf(s))) return true;
-        return S.query_.shoot && S.query_.aim && S.tryShot(s, cost, expansions);
+        return S.query_.inGoal && S.query_.inGoal(poseOf(s));
     }
+    /// The analytic expansion step: a Dubins curve from the state to the exact goal pose.
+    bool analyticExpansion(std::uint32_t s) { return S.query_.shoot && S.query_.aim && S.tryShot(s, cost, expansions); }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit)
     {

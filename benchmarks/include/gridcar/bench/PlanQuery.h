@@ -24,6 +24,15 @@ using PlannerParams = std::vector<std::pair<std::string, std::string>>;
 /// "NAME=VALUE" strings (as `--param` gives them) to pairs; InputError on a malformed one.
 PlannerParams parsePlannerParams(const std::vector<std::string> &settings);
 
+/// A planner name with parameter settings.
+using NamedConfiguration = std::pair<std::string, PlannerParams>;
+/// Every registry name, plus the configurations worth measuring apart: improved-astar-grid in
+/// integral mode, astar-octile+smooth, rrtconnect+smooth, rrtconnect+simplify (the
+/// termination test and benchmark run them all).
+std::vector<NamedConfiguration> everyConfiguration();
+/// "NAME P=V P=V" for messages and tables.
+std::string configurationLabel(const NamedConfiguration &c);
+
 /// How to build a planner for a query.
 struct PlannerConfig
 {

@@ -32,6 +32,13 @@ SmoothingResult smoothSolutionPath(const ompl::base::SpaceInformationPtr &si, co
                                    ompl::geometric::PathGeometric &path, std::vector<Pose2> &raw,
                                    const ompl::base::PlannerTerminationCondition &ptc);
 
+/// The one rule for a smoothed exact solution (improved-astar's own smoothing and the
+/// `+smooth` wrapper): it stays exact only if checkDrivable() passes on @p path, checked to
+/// the end (a check stopped by @p ptc does not pass). Returns "" when it stays exact, else
+/// checkDrivable()'s reason.
+std::string smoothedPathVerdict(const std::vector<Pose2> &path, const FootprintChecker &checker,
+                                const ompl::base::PlannerTerminationCondition &ptc);
+
 /**
  * @brief Wraps a planner: solve() runs it, then replaces its solution path by smoothPath() of
  * it (line of sight, turning-point adjustment under K_max, Bezier; collision-checked with the

@@ -17,10 +17,89 @@
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gridcar
 {
+/// A pose of an SE(2) state, and back (yaw wrapped into OMPL's range).
+Pose2 poseOfSE2(const ompl::base::State *s);
+void setSE2(ompl::base::State *s, const Pose2 &p);
+
+/**
+ * @brief What DubinsSpace and ReedsSheppSpace share: OMPL's car space @p Base whose distance()
+ * and interpolate() come from gridcar's curve function @p CurveFn, and whose cached-path
+ * interpolation (OMPL's `interpolate(from, to, t, firstTime, path, state)`, which OMPL's own
+ * motion validators use) goes through @p Codec: our curve into @p Path (OMPL's record of a
+ * curve: its word and lengths in radii) and back.
+ */
+template <class Base, class Path, CarCurve (*CurveFn)(const Pose2 &, const Pose2 &, double), class Codec>
+class CurveSpace : public Base
+{
+public:
+    CurveSpace(double turningRadius, const std::string &name) : Base(turningRadius)
+    {
+        if (!(turningRadius > 0) || !std::isfinite(turningRadius))
+            throw std::invalid_argument("a car space needs a turning radius > 0");
+        this->setName(name + this->getName());
+    }
+    double turningRadius() const { return this->rho_; }
+    /// The shortest curve between two states.
+    CarCurve curve(const ompl::base::State *from, const ompl::base::State *to) const
+    {
+        return CurveFn(poseOfSE2(from), poseOfSE2(to), this->rho_);
+    }
+    double distance(const ompl::base::State *a, const ompl::base::State *b) const override { return curve(a, b).length; }
+    void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
+                     ompl::base::State *state) const override
+    {
+        along(from, to, curve(from, to), t, state);
+    }
+    void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t, bool &firstTime, Path &path,
+                     ompl::base::State *state) const override
+    {
+        if (firstTime)
+        {
+            path = Codec::toPath(curve(from, to), this->rho_);
+            firstTime = false;
+        }
+        if (t >= 1) this->copyState(state, to);
+        else interpolate(from, path, t, state);
+    }
+
+protected:
+    void interpolate(const ompl::base::State *from, const Path &path, double t, ompl::base::State *state) const override
+    {
+        along(from, nullptr, Codec::fromPath(path, this->rho_), t, state);
+    }
+
+private:
+    /// t in [0, 1] of the curve's length from @p from; the end states exactly.
+    void along(const ompl::base::State *from, const ompl::base::State *to, const CarCurve &c, double t,
+               ompl::base::State *state) const
+    {
+        if (c.empty() || !(t > 0)) this->copyState(state, from);
+        else if (t >= 1 && to) this->copyState(state, to);
+        else setSE2(state, curvePose(poseOfSE2(from), c, std::min(t, 1.0) * c.length));
+    }
+};
+
+/// Our curves into OMPL's DubinsPath (a three-letter word, lengths in radii) and back.
+struct DubinsCodec
+{
+    static ompl::base::DubinsStateSpace::DubinsPath toPath(const CarCurve &c, double radius);
+    static CarCurve fromPath(const ompl::base::DubinsStateSpace::DubinsPath &p, double radius);
+};
+/// Our curves into OMPL's ReedsSheppPath (its table of 18 words) and back.
+struct ReedsSheppCodec
+{
+    static ompl::base::ReedsSheppStateSpace::ReedsSheppPath toPath(const CarCurve &c, double radius);
+    static CarCurve fromPath(const ompl::base::ReedsSheppStateSpace::ReedsSheppPath &p, double radius);
+};
+
 /**
  * @brief ompl::base::DubinsStateSpace (forward-only car of turning radius R) whose distance
  * and interpolation come from gridcar::dubinsCurve.
@@ -29,23 +108,11 @@ namespace gridcar
  * A. M. Shkel and V. Lumelsky, "Classification of the Dubins set", Robotics and Autonomous
  * Systems 34(4):179-202, 2001.
  */
-class DubinsSpace : public ompl::base::DubinsStateSpace
+class DubinsSpace
+  : public CurveSpace<ompl::base::DubinsStateSpace, ompl::base::DubinsStateSpace::DubinsPath, dubinsCurve, DubinsCodec>
 {
 public:
-    explicit DubinsSpace(double turningRadius);
-    double turningRadius() const { return rho_; }
-    /// The shortest Dubins curve between two states.
-    CarCurve curve(const ompl::base::State *from, const ompl::base::State *to) const;
-
-    double distance(const ompl::base::State *a, const ompl::base::State *b) const override;
-    void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
-                     ompl::base::State *state) const override;
-    void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t, bool &firstTime,
-                     DubinsPath &path, ompl::base::State *state) const override;
-
-protected:
-    void interpolate(const ompl::base::State *from, const DubinsPath &path, double t,
-                     ompl::base::State *state) const override;
+    explicit DubinsSpace(double turningRadius) : CurveSpace(turningRadius, "GridcarDubins") {}
 };
 
 /**
@@ -56,23 +123,11 @@ protected:
  * J. A. Reeds and L. A. Shepp, "Optimal paths for a car that goes both forwards and
  * backwards", Pacific Journal of Mathematics 145(2):367-393, 1990.
  */
-class ReedsSheppSpace : public ompl::base::ReedsSheppStateSpace
+class ReedsSheppSpace : public CurveSpace<ompl::base::ReedsSheppStateSpace, ompl::base::ReedsSheppStateSpace::ReedsSheppPath,
+                                          reedsSheppCurve, ReedsSheppCodec>
 {
 public:
-    explicit ReedsSheppSpace(double turningRadius);
-    double turningRadius() const { return rho_; }
-    /// The shortest Reeds-Shepp curve between two states.
-    CarCurve curve(const ompl::base::State *from, const ompl::base::State *to) const;
-
-    double distance(const ompl::base::State *a, const ompl::base::State *b) const override;
-    void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t,
-                     ompl::base::State *state) const override;
-    void interpolate(const ompl::base::State *from, const ompl::base::State *to, double t, bool &firstTime,
-                     ReedsSheppPath &path, ompl::base::State *state) const override;
-
-protected:
-    void interpolate(const ompl::base::State *from, const ReedsSheppPath &path, double t,
-                     ompl::base::State *state) const override;
+    explicit ReedsSheppSpace(double turningRadius) : CurveSpace(turningRadius, "GridcarReedsShepp") {}
 };
 
 /// The turning radius of any Dubins or Reeds-Shepp space (gridcar's or OMPL's own); 0 for

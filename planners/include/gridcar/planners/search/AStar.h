@@ -25,6 +25,17 @@ struct HasPriority<E, std::void_t<decltype(std::declval<const E &>().priority(0.
 {
 };
 
+/// True if the expander has an analytic expansion step (`bool analyticExpansion(uint32_t)`).
+template <class E, class = void>
+struct HasAnalyticExpansion : std::false_type
+{
+};
+template <class E>
+struct HasAnalyticExpansion<E, std::void_t<decltype(std::declval<E &>().analyticExpansion(std::uint32_t(0)))>>
+  : std::true_type
+{
+};
+
 /// How a search ended.
 enum class SearchOutcome
 {
@@ -54,6 +65,11 @@ struct SearchResult
  *   heuristic(next) or a callable returning it (then evaluated only when the successor's g
  *   improves; the expander knows the successor's coordinates, so it computes h without
  *   decoding the state index again).
+ *
+ * An expander may also define `bool analyticExpansion(uint32_t s)`: the analytic expansion
+ * step, called after each popped state that is not a goal (before its successors). It tries
+ * to join the state to the goal by a curve (the car lattice: a Dubins curve, its footprint
+ * checked); returning true ends the search Found at @p s, the expander holding the curve.
  *
  * An expander may also define `double priority(double g, double h, uint32_t s) const`: the
  * open list is then ordered by it instead of f = g + h (paper I's f = g' + h (1 + o) + s); the
@@ -130,7 +146,10 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
             bestH = h;
             res.closest = es;
         }
-        if (ex.isGoal(es))
+        bool reached = ex.isGoal(es);
+        if constexpr (HasAnalyticExpansion<Expander>::value)
+            reached = reached || ex.analyticExpansion(es);
+        if (reached)
         {
             res.outcome = SearchOutcome::Found;
             res.goal = es;
