@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ompl/base/ScopedState.h>
+#include <ompl/geometric/SimpleSetup.h>
 #include <ompl/util/Console.h>
 
 #include <chrono>
@@ -113,11 +115,57 @@ TEST(PlannerLimits, TimeLimitIsHonouredOn24MCellsByEveryPlanner)
     std::printf("worst lateness %.3f s\n", worst);
 }
 
+TEST(PlannerLimits, ASlowValidityCheckerIsStillStoppedPromptly)
+{
+    // an application's validity checker that takes 20 us a pose on plain SE(2), the goal walled
+    // in: expansions are slow, so polling every 256 of them would return far past the limit
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    auto space = std::make_shared<ob::SE2StateSpace>();
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(0.0);
+    bounds.setHigh(60.0);
+    space->setBounds(bounds);
+    for (const char *name : {"dijkstra", "astar-euclidean", "corner-astar", "improved-astar", "corner-astar-grid"})
+    {
+        double late = 1e9;
+        for (int attempt = 0; attempt < 2 && late >= 0.05; ++attempt)
+        {
+            ompl::geometric::SimpleSetup ss(space);
+            ss.setStateValidityChecker([](const ob::State *st) {
+                const auto spin = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
+                while (std::chrono::steady_clock::now() < spin)
+                {
+                }
+                const auto *s = st->as<ob::SE2StateSpace::StateType>();
+                const double r = std::hypot(s->getX() - 50, s->getY() - 50);
+                return r < 3 || r > 6;  // the goal inside a closed ring
+            });
+            ob::ScopedState<ob::SE2StateSpace> a(space), b(space);
+            a->setXY(5, 5);
+            a->setYaw(0);
+            b->setXY(50, 50);
+            b->setYaw(0);
+            ss.setStartAndGoalStates(a, b);
+            ob::PlannerPtr planner = makePlanner(ss.getSpaceInformation(), name);
+            planner->params().setParam("turning_radius", "3");
+            planner->params().setParam("lattice_cell", "0.5");
+            ss.setPlanner(planner);
+            ss.setup();
+            const auto t0 = std::chrono::steady_clock::now();
+            const ob::PlannerStatus st = ss.solve(0.2);
+            late = std::min(late, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() - 0.2);
+            EXPECT_NE(st, ob::PlannerStatus::EXACT_SOLUTION) << name;
+        }
+        std::printf("%-20s %+.3f s after the limit\n", name, late);
+        EXPECT_LT(late, 0.05) << name;
+    }
+}
+
 TEST(PlannerLimits, SmoothingStoppedByTheConditionIsNoExactSolution)
 {
-    // a search that finds its goal before it first polls the condition (a few expansions), and
-    // a condition that is already true: the smoothing after it must stop, and the path it did
-    // not finish is no exact solution
+    // a condition that turns true once the search has ended (its "search time" progress
+    // property is set then, before the path is smoothed): the smoothing must stop, and the path
+    // it did not finish is no exact solution
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     for (const NamedConfiguration &c :
          std::vector<NamedConfiguration>{{"improved-astar-grid", {}}, {"astar-octile+smooth", {}}})
@@ -125,10 +173,12 @@ TEST(PlannerLimits, SmoothingStoppedByTheConditionIsNoExactSolution)
         SCOPED_TRACE(configurationLabel(c));
         GridSetup s = testSetup("paper-c-robot");
         const OccupancyGrid &g = *s.grid;
-        s.ss->setPlanner(configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, false, false}));
+        auto planner = configurePlanner(s.ss->getSpaceInformation(), {c.first, c.second, false, false});
+        s.ss->setPlanner(planner);
         s.setStartAndGoal(cellPose(g, 2, 20), cellPose(g, 12, 26));  // a diagonal, then straight: one corner
         s.ss->setup();
-        const ob::PlannerStatus st = s.ss->solve(ob::PlannerTerminationCondition([] { return true; }));
+        const ob::PlannerStatus st = s.ss->solve(
+            ob::PlannerTerminationCondition([&] { return progressValue(*planner, "search time REAL") > 0; }));
         EXPECT_EQ(st, ob::PlannerStatus::APPROXIMATE_SOLUTION);
         // without the condition the same query is an exact, smoothed solution
         s.ss->clear();

@@ -71,6 +71,7 @@ void ObstacleHeuristic::reset(int i0, int j0, int ni, int nj, const std::vector<
     heap_.clear();
     closedCount_ = 0;
     stopped_ = false;
+    poll_ = PollSchedule(1023);
     ti_ = ti;
     tj_ = tj;
     for (const auto &s : seeds)
@@ -111,7 +112,7 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
 {
     while (!heap_.empty())
     {
-        if (cancelled_ && (closedCount_ & 1023u) == 1023u && cancelled_())
+        if (cancelled_ && poll_.due(closedCount_ + 1) && (poll_.polled(), cancelled_()))
         {
             stopped_ = true;
             return false;

@@ -3,6 +3,7 @@
 /// @brief The one A* search loop shared by every grid planner.
 
 #include "gridcar/planners/search/OpenList.h"
+#include "gridcar/planners/search/PollSchedule.h"
 #include "gridcar/planners/search/SearchSpace.h"
 
 #include <atomic>
@@ -84,7 +85,8 @@ struct SearchResult
  * decrease-key); otherwise OpenList (a binary heap with lazy deletion: stale entries are
  * skipped when popped). Both pop in the same order. Tie-breaking is deterministic: lower f first, then higher g (deeper states, fewer
  * re-expansions on plateaus), then lower state index. @p cancelled is polled whenever the
- * expansion count & @p pollMask is 0 (every 256 expansions by default; the car lattice, whose
+ * expansion count & the mask of a PollSchedule is 0: every expansion at first, every 256 by
+ * default (@p pollMask) once polls come fast, fewer again while they come slowly (the car lattice, whose
  * expansions check whole primitives, polls every 16). With a consistent heuristic each state is expanded at most once; with an
  * inconsistent one (paper I's mode) a closed state is reopened when a cheaper g reaches it.
  */
@@ -123,6 +125,7 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
         heap.push({priorityOf(0.0, ex.heuristic(s), s), 0.0f, s});
     }
     double bestH = std::numeric_limits<double>::infinity();
+    PollSchedule poll(pollMask);
     while (!heap.empty())
     {
         const OpenEntry e = heap.pop();
@@ -155,10 +158,14 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
             res.goal = es;
             return res;
         }
-        if ((res.expanded & pollMask) == 0 && cancelled())
+        if (poll.due(res.expanded))
         {
-            res.outcome = SearchOutcome::Cancelled;
-            return res;
+            poll.polled();
+            if (cancelled())
+            {
+                res.outcome = SearchOutcome::Cancelled;
+                return res;
+            }
         }
         ex.successors(es, [&](std::uint32_t n, double cost, auto &&hn) {
             const double ng = g + cost;

@@ -3,6 +3,8 @@
 /// @brief The obstacle-aware heuristic of the car lattice: shortest 2D distances to the goal
 /// over the lattice nodes where the vehicle fits, computed backwards from the goal on demand.
 
+#include "gridcar/planners/search/PollSchedule.h"
+
 #include <array>
 #include <cstdint>
 #include <cstdlib>
@@ -62,7 +64,8 @@ public:
     /// stepAxis[k] for step k (the car fits there lined up with the step). Asked at most once
     /// per node and axis (at most 16 axes).
     void setAxisTest(std::vector<int> stepAxis, std::function<bool(int, int, int)> fitsAxis);
-    /// Polled every 1024 closed nodes while distance() resumes the search.
+    /// Polled while distance() resumes the search: every closed node at first, every 1024 once
+    /// polls come fast (PollSchedule).
     void setCancel(std::function<bool()> cancelled) { cancelled_ = std::move(cancelled); }
     bool inBox(int i, int j) const { return i >= i0_ && j >= j0_ && i < i0_ + ni_ && j < j0_ + nj_; }
     /// Nodes closed so far (for benchmarks).
@@ -87,6 +90,7 @@ private:
     std::function<bool(int, int, int)> fitsAxis_;
     bool axisFits(std::size_t n, int i, int j, int axis);
     bool stopped_{false};
+    PollSchedule poll_{1023};  ///< when expandUntil() polls cancelled_ (reset per search)
     struct Node
     {
         double g;
