@@ -3,6 +3,10 @@
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/Setup.h"
 
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/geometric/SimpleSetup.h>
+
 #include <memory>
 #include <string>
 
@@ -50,6 +54,41 @@ inline GridSetup carSetup(SpaceKind kind)
     SetupOptions o;
     o.space = kind;
     return makeGridSetup(wallMap(), VehicleParams::preset("paper-i"), o);
+}
+
+/// W x H m at 0.25 m, free but for two walls: one from the top at a third of the width, down
+/// to a quarter of the height, one from the bottom at two thirds, up to three quarters:
+/// corners to take, different paths for different planners.
+inline std::shared_ptr<const OccupancyGrid> twoWallsMap(int widthCells, int heightCells)
+{
+    auto g = std::make_shared<OccupancyGrid>(widthCells, heightCells, 0.25, CellState::Free);
+    const int c1 = widthCells * 5 / 16, c2 = widthCells * 21 / 32;
+    for (int r = heightCells / 4; r < heightCells; ++r)
+        for (int c = c1; c < c1 + 3; ++c) g->set(c, r, CellState::Occupied);
+    for (int r = 0; r < heightCells * 3 / 4; ++r)
+        for (int c = c2; c < c2 + 3; ++c) g->set(c, r, CellState::Occupied);
+    return g;
+}
+
+/// A plain OMPL SE(2) space over [0, size]^2 (an application's own, not gridcar's), with a
+/// SimpleSetup from @p start to @p goal (yaw 0) on it and the given validity function.
+inline std::shared_ptr<ompl::base::SE2StateSpace> plainSpace(double size)
+{
+    auto space = std::make_shared<ompl::base::SE2StateSpace>();
+    ompl::base::RealVectorBounds bounds(2);
+    bounds.setLow(0.0);
+    bounds.setHigh(size);
+    space->setBounds(bounds);
+    return space;
+}
+inline void setPlainQuery(ompl::geometric::SimpleSetup &ss, double x0, double y0, double x1, double y1)
+{
+    ompl::base::ScopedState<ompl::base::SE2StateSpace> a(ss.getStateSpace()), b(ss.getStateSpace());
+    a->setXY(x0, y0);
+    a->setYaw(0);
+    b->setXY(x1, y1);
+    b->setYaw(0);
+    ss.setStartAndGoalStates(a, b);
 }
 
 inline Pose2 cellPose(const OccupancyGrid &g, int c, int r, double yaw = 0.0) { return {g.cellCenterX(c), g.cellCenterY(r), yaw}; }

@@ -28,16 +28,7 @@ namespace ob = ompl::base;
 
 namespace
 {
-/// 50 m x 40 m at 0.25 m with a few walls: enough structure for different paths.
-std::shared_ptr<const OccupancyGrid> wallsMap()
-{
-    auto g = std::make_shared<OccupancyGrid>(200, 160, 0.25, CellState::Free);
-    for (int r = 30; r < 160; ++r)
-        for (int c = 60; c < 63; ++c) g->set(c, r, CellState::Occupied);
-    for (int r = 0; r < 120; ++r)
-        for (int c = 130; c < 133; ++c) g->set(c, r, CellState::Occupied);
-    return g;
-}
+std::shared_ptr<const OccupancyGrid> wallsMap() { return twoWallsMap(200, 160); }
 
 /// A set-up of its own (SimpleSetup, SpaceInformation) on the shared checker.
 GridSetup setupOn(const std::shared_ptr<const OccupancyGrid> &grid, const std::shared_ptr<const DistanceField> &field,

@@ -105,22 +105,13 @@ TEST(PlannerLifecycle, AnApplicationsOwnCheckerSwappedIsNoticed)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     // plain SE(2) and the application's own validity function, swapped for one with a wall
-    auto space = std::make_shared<ob::SE2StateSpace>();
-    ob::RealVectorBounds bounds(2);
-    bounds.setLow(0.0);
-    bounds.setHigh(60.0);
-    space->setBounds(bounds);
+    auto space = plainSpace(60.0);
     for (const char *name : {"corner-astar", "improved-astar", "astar-euclidean"})
     {
         SCOPED_TRACE(name);
         ompl::geometric::SimpleSetup ss(space);
         ss.setStateValidityChecker([](const ob::State *) { return true; });
-        ob::ScopedState<ob::SE2StateSpace> a(space), b(space);
-        a->setXY(5, 30);
-        a->setYaw(0);
-        b->setXY(55, 30);
-        b->setYaw(0);
-        ss.setStartAndGoalStates(a, b);
+        setPlainQuery(ss, 5, 30, 55, 30);
         ob::PlannerPtr planner = makePlanner(ss.getSpaceInformation(), name);
         planner->params().setParam("turning_radius", "3");
         planner->params().setParam("lattice_cell", "1");

@@ -120,11 +120,7 @@ TEST(PlannerLimits, ASlowValidityCheckerIsStillStoppedPromptly)
     // an application's validity checker that takes 20 us a pose on plain SE(2), the goal walled
     // in: expansions are slow, so polling every 256 of them would return far past the limit
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    auto space = std::make_shared<ob::SE2StateSpace>();
-    ob::RealVectorBounds bounds(2);
-    bounds.setLow(0.0);
-    bounds.setHigh(60.0);
-    space->setBounds(bounds);
+    auto space = plainSpace(60.0);
     for (const char *name : {"dijkstra", "astar-euclidean", "corner-astar", "improved-astar", "corner-astar-grid"})
     {
         double late = 1e9;
@@ -140,12 +136,7 @@ TEST(PlannerLimits, ASlowValidityCheckerIsStillStoppedPromptly)
                 const double r = std::hypot(s->getX() - 50, s->getY() - 50);
                 return r < 3 || r > 6;  // the goal inside a closed ring
             });
-            ob::ScopedState<ob::SE2StateSpace> a(space), b(space);
-            a->setXY(5, 5);
-            a->setYaw(0);
-            b->setXY(50, 50);
-            b->setYaw(0);
-            ss.setStartAndGoalStates(a, b);
+            setPlainQuery(ss, 5, 5, 50, 50);
             ob::PlannerPtr planner = makePlanner(ss.getSpaceInformation(), name);
             planner->params().setParam("turning_radius", "3");
             planner->params().setParam("lattice_cell", "0.5");

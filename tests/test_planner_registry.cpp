@@ -18,16 +18,7 @@ namespace ob = ompl::base;
 
 namespace
 {
-/// 40 m x 30 m at 0.25 m with two walls: corners to take.
-std::shared_ptr<const OccupancyGrid> wallsMap()
-{
-    auto g = std::make_shared<OccupancyGrid>(160, 120, 0.25, CellState::Free);
-    for (int r = 30; r < 120; ++r)
-        for (int c = 50; c < 53; ++c) g->set(c, r, CellState::Occupied);
-    for (int r = 0; r < 90; ++r)
-        for (int c = 105; c < 108; ++c) g->set(c, r, CellState::Occupied);
-    return g;
-}
+std::shared_ptr<const OccupancyGrid> wallsMap() { return twoWallsMap(160, 120); }
 
 /// Length of the planner's exact solution (-1 if none).
 double lengthOf(GridSetup &s, const ob::PlannerPtr &p)
