@@ -30,7 +30,6 @@ public:
         if (dt > 2e-3) mask_ >>= 1;
         else if (dt < 5e-4 && mask_ < max_) mask_ = (mask_ << 1) | 1u;
     }
-    std::uint64_t mask() const { return mask_; }
 
 private:
     using Clock = std::chrono::steady_clock;
