@@ -104,6 +104,70 @@ TEST(CarLattice, PrimitivesJoinNodesWithBoundedCurvatureAndDenseSamples)
             }
 }
 
+// The primitive set from its configuration: further radii add wider turns (where they land on
+// another node), reverse adds each forward primitive mirrored, the body turned round.
+TEST(CarLattice, FurtherRadiiAndReverseAreConfigurationOnly)
+{
+    for (int headings : {8, 16})
+    {
+        const CarLatticeConfig base{0.2, headings, 1.9, 0.05, 3.0};
+        const CarLattice plain(base);
+        CarLatticeConfig wide = base;
+        wide.extraRadii = {3.8, 7.6};
+        const CarLattice radii(wide);
+        CarLatticeConfig back = base;
+        back.reverse = true;
+        const CarLattice reversing(back);
+        for (int h = 0; h < headings; ++h)
+        {
+            std::size_t extra = 0;
+            for (const LatticePrimitive &p : radii.primitives(h))
+            {
+                EXPECT_FALSE(p.reverse);
+                if (p.turn == 0) continue;
+                EXPECT_TRUE(p.radius == 1.9 || p.radius == 3.8 || p.radius == 7.6) << p.radius;
+                if (p.radius > 1.9) ++extra;
+                // no two turns of the set end on the same node and heading
+                for (const LatticePrimitive &o : radii.primitives(h))
+                    if (&o != &p) EXPECT_FALSE(o.to == p.to && o.di == p.di && o.dj == p.dj);
+                Pose2 prev{0, 0, radii.yaw(h)};
+                for (const Pose2 &q : p.samples)
+                {
+                    const double ds = std::hypot(q.x - prev.x, q.y - prev.y);
+                    if (ds > 1e-9) EXPECT_LE(std::abs(wrapAngle(q.yaw - prev.yaw)) / ds, 1.0 / p.radius * (1 + 1e-3));
+                    prev = q;
+                }
+            }
+            EXPECT_GE(extra, 2u) << "heading " << h;  // a wider turn each side at least
+            ASSERT_EQ(reversing.primitives(h).size(), 2 * plain.primitives(h).size());
+            const int opposite = (h + headings / 2) % headings;
+            for (std::size_t k = 0; k < plain.primitives(h).size(); ++k)
+            {
+                const LatticePrimitive &r = reversing.primitives(h)[plain.primitives(h).size() + k];
+                const LatticePrimitive &f = plain.primitives(opposite)[k];
+                EXPECT_TRUE(r.reverse);
+                EXPECT_EQ(r.from, h);
+                EXPECT_EQ(r.to, (f.to + headings / 2) % headings);
+                EXPECT_EQ(r.di, f.di);
+                EXPECT_EQ(r.dj, f.dj);
+                EXPECT_DOUBLE_EQ(r.length, f.length);
+                ASSERT_EQ(r.samples.size(), f.samples.size());
+                for (std::size_t i = 0; i < r.samples.size(); ++i)
+                {
+                    EXPECT_DOUBLE_EQ(r.samples[i].x, f.samples[i].x);
+                    EXPECT_NEAR(wrapAngle(r.samples[i].yaw - f.samples[i].yaw - M_PI), 0.0, 1e-12);
+                    // the reference point moves against the body's heading
+                }
+                const Pose2 &e = r.samples.front();
+                EXPECT_LT(e.x * std::cos(reversing.yaw(h)) + e.y * std::sin(reversing.yaw(h)), 0.0);
+            }
+        }
+    }
+    CarLatticeConfig bad{0.2, 16, 1.9, 0.05, 3.0};
+    bad.extraRadii = {1.0};
+    EXPECT_THROW(CarLattice{bad}, std::invalid_argument);
+}
+
 TEST(CarLattice, BadConfigurationsThrow)
 {
     EXPECT_THROW(CarLattice({0.0, 16, 1.0, 0.05, 1.0}), std::invalid_argument);

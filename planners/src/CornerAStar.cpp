@@ -22,26 +22,31 @@ struct CornerState
 };
 }  // namespace
 
+namespace
+{
 /// Successors of corner-weighted A*: a move in any direction but a reversal, costing its
 /// length plus the corner weight of the heading change.
 struct CornerExpander
 {
-    const GridPlanner *self;
-    const GridPlanner::Query &q;
+    const GridFamily &f;
     const double *turnCost;
     CornerState states;
+    double hAt(int c, int r) const
+    {
+        const GridQuery &q = f.query();
+        return q.goalIsState ? f.octile(c, r, q.goalCol, q.goalRow) : 0.0;
+    }
     double heuristic(std::uint32_t s) const
     {
-        if (!q.goalIsState) return 0.0;
         int c, r, d;
         states.decode(s, c, r, d);
-        return self->octile(c, r, q.goalCol, q.goalRow);
+        return hAt(c, r);
     }
     bool isGoal(std::uint32_t s) const
     {
         int c, r, d;
         states.decode(s, c, r, d);
-        return self->isGoal(c, r, d);
+        return f.isGoal(c, r, d);
     }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit) const
@@ -51,17 +56,51 @@ struct CornerExpander
         for (int d = 0; d < 8; ++d)
         {
             const int t = Moves::turn(dir, d);
-            if (t == 4 || !self->moveValid(c, r, d)) continue;  // never a reversal
+            if (t == 4 || !f.moveValid(c, r, d)) continue;  // never a reversal
             const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
-            emit(states.encode(nc, nr, d), self->stepLength(d) + turnCost[t],
-                 q.goalIsState ? self->octile(nc, nr, q.goalCol, q.goalRow) : 0.0);
+            emit(states.encode(nc, nr, d), f.stepLength(d) + turnCost[t], hAt(nc, nr));
         }
     }
 };
 
+/// Paper C's node type on the grid lattice: (cell, arrival direction), dense.
+class CornerNodes : public GridNodes
+{
+public:
+    explicit CornerNodes(const CornerAStar &p) : p_(p) {}
+    std::size_t denseStates(const GridFamily &f) const override { return std::size_t(f.width()) * f.height() * 8; }
+    std::vector<std::uint32_t> starts(const GridFamily &f) override
+    {
+        const CornerState states{f.cellIndex()};
+        const GridQuery &q = f.query();
+        // the start state's yaw (nearest of 8 directions), or every direction at g = 0 when the
+        // start heading is free: the first move then costs no corner
+        if (q.startDir >= 0) return {states.encode(q.startCol, q.startRow, q.startDir)};
+        std::vector<std::uint32_t> all;
+        for (int d = 0; d < 8; ++d) all.push_back(states.encode(q.startCol, q.startRow, d));
+        return all;
+    }
+    SearchResult search(GridFamily &f, const std::vector<std::uint32_t> &starts, const std::function<bool()> &cancelled,
+                        std::atomic<std::uint64_t> *progress) override
+    {
+        const CornerWeights &w = p_.weights();
+        const double turnCost[5] = {0.0, w.w45, w.w90, w.w135, 0.0};
+        CornerExpander ex{f, turnCost, CornerState{f.cellIndex()}};
+        return astar(f.dense(), starts, ex, cancelled, progress);
+    }
+    void decode(const GridFamily &f, std::uint32_t s, int &col, int &row, int &dir) const override
+    {
+        CornerState{f.cellIndex()}.decode(s, col, row, dir);
+    }
+
+private:
+    const CornerAStar &p_;
+};
+}  // namespace
+
 CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanner(si, "corner-astar")
 {
-    weights_ = userWeights_;
+    weights_ = params_.weights;
     declareParam<double>("corner_weight_45", this, &CornerAStar::setWeight45,
                          &CornerAStar::weight45, "0.:0.1:50.");
     declareParam<double>("corner_weight_90", this, &CornerAStar::setWeight90,
@@ -78,7 +117,7 @@ void CornerAStar::setMode(const std::string &m)
 {
     if (m != "drivable" && m != "paper")
         throw std::invalid_argument("corner-astar: mode must be 'drivable' or 'paper', got '" + printable(m) + "'");
-    drivable_ = m == "drivable";
+    params_.carLattice = m == "drivable";
     parameterSet("mode");
 }
 
@@ -86,7 +125,7 @@ void CornerAStar::setLattice(const std::string &l)
 {
     if (l != "car" && l != "grid")
         throw std::invalid_argument("corner-astar: lattice must be 'car' or 'grid', got '" + printable(l) + "'");
-    drivable_ = l == "car";
+    params_.carLattice = l == "car";
     parameterSet("lattice");
 }
 
@@ -137,20 +176,20 @@ double checkedWeight(double w, const char *name)
 
 void CornerAStar::setWeight45(double w)
 {
-    userWeights_.w45 = checkedWeight(w, "corner_weight_45");
-    userSet_[0] = true;
+    params_.weights.w45 = checkedWeight(w, "corner_weight_45");
+    params_.weightSet[0] = true;
     parameterSet("corner_weight_45");
 }
 void CornerAStar::setWeight90(double w)
 {
-    userWeights_.w90 = checkedWeight(w, "corner_weight_90");
-    userSet_[1] = true;
+    params_.weights.w90 = checkedWeight(w, "corner_weight_90");
+    params_.weightSet[1] = true;
     parameterSet("corner_weight_90");
 }
 void CornerAStar::setWeight135(double w)
 {
-    userWeights_.w135 = checkedWeight(w, "corner_weight_135");
-    userSet_[2] = true;
+    params_.weights.w135 = checkedWeight(w, "corner_weight_135");
+    params_.weightSet[2] = true;
     parameterSet("corner_weight_135");
 }
 
@@ -158,7 +197,7 @@ void CornerAStar::setWeightMode(const std::string &mode)
 {
     if (mode != "paper" && mode != "physics")
         throw std::invalid_argument("corner-astar: weights must be 'paper' or 'physics', got '" + printable(mode) + "'");
-    physics_ = mode == "physics";
+    params_.physics = mode == "physics";
     parameterSet("weights");
 }
 
@@ -166,36 +205,12 @@ void CornerAStar::setup()
 {
     GridPlanner::setup();
     // the weights set explicitly, the others per `weights` (the same whenever they were set)
-    const CornerWeights base = physics_ ? physicsCornerWeights(vehicle()) : CornerWeights();  // no checker: the default car
-    weights_.w45 = userSet_[0] ? userWeights_.w45 : base.w45;
-    weights_.w90 = userSet_[1] ? userWeights_.w90 : base.w90;
-    weights_.w135 = userSet_[2] ? userWeights_.w135 : base.w135;
+    const CornerWeights base = params_.physics ? physicsCornerWeights(vehicle()) : CornerWeights();  // no checker: the default car
+    weights_.w45 = params_.weightSet[0] ? params_.weights.w45 : base.w45;
+    weights_.w90 = params_.weightSet[1] ? params_.weights.w90 : base.w90;
+    weights_.w135 = params_.weightSet[2] ? params_.weights.w135 : base.w135;
 }
 
-std::size_t CornerAStar::stateCount() const { return std::size_t(width_) * height_ * 8; }
-
-void CornerAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
-{
-    CornerState{cellIndex()}.decode(s, col, row, dir);
-}
-
-std::vector<std::uint32_t> CornerAStar::startStates(const Query &q) const
-{
-    const CornerState states{cellIndex()};
-    // the start state's yaw (nearest of 8 directions), or every direction at g = 0 when the
-    // start heading is free: the first move then costs no corner
-    if (q.startDir >= 0) return {states.encode(q.startCol, q.startRow, q.startDir)};
-    std::vector<std::uint32_t> all;
-    for (int d = 0; d < 8; ++d) all.push_back(states.encode(q.startCol, q.startRow, d));
-    return all;
-}
-
-SearchResult CornerAStar::runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
-                                    const ompl::base::PlannerTerminationCondition &ptc)
-{
-    const double turnCost[5] = {0.0, weights_.w45, weights_.w90, weights_.w135, 0.0};
-    CornerExpander ex{this, q, turnCost, CornerState{cellIndex()}};
-    return astar(*search_, starts, ex, [&] { return ptc.eval(); }, &progressExpanded_);
-}
+std::unique_ptr<GridNodes> CornerAStar::makeGridNodes() { return std::make_unique<CornerNodes>(*this); }
 
 }  // namespace gridcar

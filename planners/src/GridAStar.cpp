@@ -6,10 +6,9 @@ namespace gridcar
 {
 namespace
 {
-template <class Owner>
 struct CellExpander
 {
-    const Owner &o;
+    const GridFamily &f;
     CellIndex cells;
     GridHeuristic h;
     double straight, diag;
@@ -39,7 +38,7 @@ struct CellExpander
         if (goalKnown) return s == cells.of(goalCol, goalRow);
         int c, r;
         cells.split(s, c, r);
-        return o.goalTest(c, r, -1);
+        return f.isGoal(c, r, -1);
     }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit) const
@@ -47,12 +46,39 @@ struct CellExpander
         int c, r;
         cells.split(s, c, r);
         for (int d = 0; d < 8; ++d)
-            if (o.move(c, r, d))
+            if (f.moveValid(c, r, d))
             {
                 const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
                 emit(cells.of(nc, nr), (d & 1) ? diag : straight, [this, nc, nr] { return heuristicAt(nc, nr); });
             }
     }
+};
+
+/// The plain grid search's node type: a cell, dense.
+class CellNodes : public GridNodes
+{
+public:
+    explicit CellNodes(GridHeuristic h) : h_(h) {}
+    std::size_t denseStates(const GridFamily &f) const override { return std::size_t(f.width()) * f.height(); }
+    std::vector<std::uint32_t> starts(const GridFamily &f) override
+    {
+        return {f.cellIndex().of(f.query().startCol, f.query().startRow)};
+    }
+    SearchResult search(GridFamily &f, const std::vector<std::uint32_t> &starts, const std::function<bool()> &cancelled,
+                        std::atomic<std::uint64_t> *progress) override
+    {
+        const GridQuery &q = f.query();
+        CellExpander ex{f, f.cellIndex(), h_, f.stepLength(0), f.stepLength(1), q.goalCol, q.goalRow, q.goalIsState};
+        return astar(f.dense(), starts, ex, cancelled, progress);
+    }
+    void decode(const GridFamily &f, std::uint32_t s, int &col, int &row, int &dir) const override
+    {
+        f.cellIndex().split(s, col, row);
+        dir = -1;
+    }
+
+private:
+    GridHeuristic h_;
 };
 }  // namespace
 
@@ -61,30 +87,6 @@ GridAStar::GridAStar(const ompl::base::SpaceInformationPtr &si, GridHeuristic h,
 {
 }
 
-std::size_t GridAStar::stateCount() const { return std::size_t(width_) * height_; }
-
-std::vector<std::uint32_t> GridAStar::startStates(const Query &q) const
-{
-    return {cellIndex().of(q.startCol, q.startRow)};
-}
-
-void GridAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
-{
-    cellIndex().split(s, col, row);
-    dir = -1;
-}
-
-SearchResult GridAStar::runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
-                                  const ompl::base::PlannerTerminationCondition &ptc)
-{
-    struct Access
-    {
-        const GridAStar *self;
-        bool goalTest(int c, int r, int d) const { return self->isGoal(c, r, d); }
-        bool move(int c, int r, int d) const { return self->moveValid(c, r, d); }
-    } access{this};
-    CellExpander<Access> ex{access, cellIndex(), heuristic_, straightStep_, diagStep_, q.goalCol, q.goalRow, q.goalIsState};
-    return astar(*search_, starts, ex, [&] { return ptc.eval(); }, &progressExpanded_);
-}
+std::unique_ptr<GridNodes> GridAStar::makeGridNodes() { return std::make_unique<CellNodes>(heuristic_); }
 
 }  // namespace gridcar

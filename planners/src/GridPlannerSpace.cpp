@@ -4,72 +4,22 @@
 /// the turning radius from the space, and the default car's dynamics.
 #include "gridcar/planners/GridPlanner.h"
 
-#include "gridcar/core/Memory.h"
 #include "gridcar/spaces/CurveSpaces.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Console.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace gridcar
 {
-void GridPlanner::setMaxMemoryMb(double mb)
-{
-    if (!std::isfinite(mb) || mb < 0.0 || mb > 1e7)
-        throw std::invalid_argument(getName() + ": max_memory_mb must be 0 (no bound) or a size in MB up to 1e7");
-    maxMemoryMb_ = mb;
-    parameterSet("max_memory_mb");
-}
-
-ompl::base::PlannerTerminationCondition GridPlanner::withMemoryBound(const ompl::base::PlannerTerminationCondition &ptc)
-{
-    memoryStopped_ = false;
-    lastStopReason_.clear();
-    if (!(maxMemoryMb_ > 0) || residentMegabytes() < 0) return ptc;
-    using Clock = std::chrono::steady_clock;
-    auto next = std::make_shared<Clock::time_point>(Clock::now());
-    const ompl::base::PlannerTerminationCondition memory([this, next] {
-        if (memoryStopped_) return true;
-        const auto now = Clock::now();
-        if (now < *next) return false;
-        *next = now + std::chrono::milliseconds(10);
-        const double mb = residentMegabytes();
-        if (mb <= maxMemoryMb_) return false;
-        memoryStopped_ = true;
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "stopped at the memory bound: resident memory %.0f MB > max_memory_mb %.0f MB", mb,
-                      maxMemoryMb_);
-        lastStopReason_ = buf;
-        return true;
-    });
-    return ompl::base::plannerOrTerminationCondition(ptc, memory);
-}
-
-ompl::base::PlannerStatus GridPlanner::memoryStatus(bool pathAdded) const
-{
-    OMPL_WARN("%s: %s", getName().c_str(), lastStopReason_.c_str());
-    return pathAdded ? ompl::base::PlannerStatus::APPROXIMATE_SOLUTION : ompl::base::PlannerStatus::ABORT;
-}
-
-void GridPlanner::setTurningRadius(double r)
-{
-    if (!std::isfinite(r) || r < 0.0 || r > 1e4)
-        throw std::invalid_argument(getName() + ": turning_radius must be 0 (automatic) or a length in (0, 10000] m");
-    turningRadius_ = r;
-    parameterSet("turning_radius");
-}
-
 double GridPlanner::turningRadius() const
 {
     // never tighter than gridcar's vehicle can drive
-    if (checker_) return std::max(turningRadius_, checker_->vehicle().minTurningRadius());
-    if (turningRadius_ > 0) return turningRadius_;
+    if (checker_) return std::max(params_.turningRadius, checker_->vehicle().minTurningRadius());
+    if (params_.turningRadius > 0) return params_.turningRadius;
     const double r = carSpaceTurningRadius(*si_->getStateSpace());
     return r > 0 ? r : VehicleParams{}.minTurningRadius();
 }
@@ -99,7 +49,7 @@ std::shared_ptr<GridSE2StateSpace> GridPlanner::ownGridSpace()
     const double sx = b.high[0] - b.low[0], sy = b.high[1] - b.low[1];
     if (!(sx > 0 && sy > 0) || !std::isfinite(sx) || !std::isfinite(sy))
         throw ompl::Exception(getName(), "the SE(2) space needs finite, non-empty x and y bounds");
-    double cell = latticeCell_ > 0 ? latticeCell_ : turningRadius() / 4;
+    double cell = params_.latticeCell > 0 ? params_.latticeCell : turningRadius() / 4;
     constexpr double kMaxCells = double(1 << 24);
     if (usesCarLattice())
         cell = std::max(cell, std::sqrt(sx * sy / kMaxCells));  // geometry only: the car lattice has its own nodes

@@ -2,6 +2,7 @@
 #include "gridcar/core/Errors.h"
 
 #include "gridcar/planners/SmoothedPlanner.h"
+#include "gridcar/planners/search/detail/StateInterner.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/util/Console.h>
@@ -42,33 +43,33 @@ std::string oneOf(const std::string &v, std::initializer_list<const char *> allo
 
 void ImprovedAStar::setMode(const std::string &m)
 {
-    paperMode_ = oneOf(m, {"paper", "integral"}, "mode") == "paper";
+    ip_.paperMode = oneOf(m, {"paper", "integral"}, "mode") == "paper";
     parameterSet("mode");
 }
 void ImprovedAStar::setLattice(const std::string &l)
 {
-    carLattice_ = oneOf(l, {"car", "grid"}, "lattice") == "car";
+    ip_.carLattice = oneOf(l, {"car", "grid"}, "lattice") == "car";
     parameterSet("lattice");
 }
 void ImprovedAStar::setHeuristic(const std::string &h)
 {
-    heuristic_ = oneOf(h, {"auto", "arc", "euclidean", "octile"}, "heuristic");
+    ip_.heuristic = oneOf(h, {"auto", "arc", "euclidean", "octile"}, "heuristic");
     parameterSet("heuristic");
 }
 void ImprovedAStar::setDelta(double d)
 {
     if (!std::isfinite(d) || d < 0.0) throw std::invalid_argument("improved-astar: delta must be a finite number >= 0");
-    delta_ = d;
+    ip_.delta = d;
     parameterSet("delta");
 }
 void ImprovedAStar::setObstacleCost(const std::string &c)
 {
-    voronoi_ = oneOf(c, {"inverse", "voronoi"}, "obstacle_cost") == "voronoi";
+    ip_.voronoi = oneOf(c, {"inverse", "voronoi"}, "obstacle_cost") == "voronoi";
     parameterSet("obstacle_cost");
 }
 void ImprovedAStar::setContour(const std::string &c)
 {
-    points_ = oneOf(c, {"fcl", "points"}, "contour") == "points";
+    ip_.points = oneOf(c, {"fcl", "points"}, "contour") == "points";
     parameterSet("contour");
 }
 
@@ -81,89 +82,113 @@ void ImprovedAStar::setup()
 {
     GridPlanner::setup();
     if (!obstacleScratch_) obstacleScratch_ = si_->allocState();
-    if (!checker_ && (voronoi_ || points_))
-        throw ompl::Exception(getName(), std::string(voronoi_ ? "obstacle_cost=voronoi" : "contour=points") +
+    if (!checker_ && (ip_.voronoi || ip_.points))
+        throw ompl::Exception(getName(), std::string(ip_.voronoi ? "obstacle_cost=voronoi" : "contour=points") +
                                              " needs gridcar's footprint validity checker (the map's distance field)");
     const VehicleParams &v = vehicle();
     const double kmax = v.maxCurvature();
     const double half = M_PI / 8;  // half of a 45-degree turn
     const double lturn = std::isfinite(kmax) ? 2 * std::sin(half) / (kmax * std::cos(half) * std::cos(half)) : 0.0;
-    need_[0] = int(std::ceil(lturn / straightStep_ - 1e-9));
-    need_[1] = int(std::ceil(lturn / diagStep_ - 1e-9));
+    need_[0] = int(std::ceil(lturn / cellSize() - 1e-9));
+    need_[1] = int(std::ceil(lturn / (cellSize() * std::sqrt(2.0)) - 1e-9));
     runStates_ = std::max(need_[0], need_[1]) + 1;
     const double phi = v.maxSteerDeg * M_PI / 180.0;
     arcFactor_ = phi > 1e-9 ? phi / std::sin(phi) : 1.0;
-    const std::string h = heuristic_ == "auto" ? (paperMode_ ? "arc" : "octile") : heuristic_;
+    const std::string h = ip_.heuristic == "auto" ? (ip_.paperMode ? "arc" : "octile") : ip_.heuristic;
     hKind_ = h == "arc" ? 0 : h == "euclidean" ? 1 : 2;
 }
 
 void ImprovedAStar::clear()
 {
     GridPlanner::clear();
-    records_.reset();
-    states_.clear();
     lastSmoothing_ = SmoothingResult();
     latticePath_.clear();
 }
 
-std::size_t ImprovedAStar::stateCount() const { return states_.size(); }
-
-std::uint32_t ImprovedAStar::intern(std::uint64_t key) const { return states_.intern(key); }
-
-ImprovedAStar::Key ImprovedAStar::keyCodec() const { return {std::uint64_t(width_), std::uint64_t(runStates_)}; }
-
-void ImprovedAStar::decode(std::uint32_t s, int &col, int &row, int &dir) const
-{
-    int k;
-    keyCodec().split(keyOf(s), col, row, dir, k);
-}
+ImprovedAStar::Key ImprovedAStar::keyCodec() const { return {std::uint64_t(space_->width()), std::uint64_t(runStates_)}; }
 
 double ImprovedAStar::obstacleCostAt(int col, int row) const
 {
     if (!checker_) return obstacleCostAtPose({space_->cellCenterX(col), space_->cellCenterY(row), 0.0});
     const DistanceField &f = checker_->field();
-    if (voronoi_) return delta_ * f.voronoiField(space_->cellCenterX(col), space_->cellCenterY(row));
+    if (ip_.voronoi) return ip_.delta * f.voronoiField(space_->cellCenterX(col), space_->cellCenterY(row));
     const double d = f.cellDistance(col, row);
-    return d > 0 ? delta_ / d : std::numeric_limits<double>::infinity();
+    return d > 0 ? ip_.delta / d : std::numeric_limits<double>::infinity();
 }
 
 double ImprovedAStar::heuristicAt(int col, int row, int goalCol, int goalRow) const
 {
+    const double step = cellSize(), diag = cellSize() * std::sqrt(2.0);
     const double dx = std::abs(goalCol - col), dy = std::abs(goalRow - row);
     switch (hKind_)
     {
-        case 0: return arcFactor_ * straightStep_ * std::hypot(dx, dy);
-        case 1: return straightStep_ * std::hypot(dx, dy);
-        default: return octile(col, row, goalCol, goalRow);
+        case 0: return arcFactor_ * step * std::hypot(dx, dy);
+        case 1: return step * std::hypot(dx, dy);
+        default: return step * std::max(dx, dy) + (diag - step) * std::min(dx, dy);  // octile
     }
 }
 
-std::vector<std::uint32_t> ImprovedAStar::startStates(const Query &q) const
+/// Paper I's node type on the grid lattice: (cell, heading of 8, straight run k), interned on
+/// discovery (the lattice is not bounded by 32-bit dense indices), records in chunks.
+class ImprovedNodes : public GridNodes
 {
-    states_.clear();
-    const Key key = keyCodec();
-    std::vector<std::uint32_t> out;
-    for (int d = 0; d < 8; ++d)
-        if (q.startDir < 0 || d == q.startDir) out.push_back(intern(key.of(q.startCol, q.startRow, d, need_[d & 1] / 2)));
-    return out;
-}
+public:
+    explicit ImprovedNodes(ImprovedAStar &p) : p_(p) {}
+    std::size_t denseStates(const GridFamily &) const override { return 0; }
+    std::vector<std::uint32_t> starts(const GridFamily &f) override
+    {
+        states_.clear();
+        const ImprovedAStar::Key key = p_.keyCodec();
+        const GridQuery &q = f.query();
+        std::vector<std::uint32_t> out;
+        for (int d = 0; d < 8; ++d)
+            if (q.startDir < 0 || d == q.startDir)
+                out.push_back(intern(key.of(q.startCol, q.startRow, d, p_.need_[d & 1] / 2)));
+        return out;
+    }
+    SearchResult search(GridFamily &f, const std::vector<std::uint32_t> &starts, const std::function<bool()> &cancelled,
+                        std::atomic<std::uint64_t> *progress) override;
+    void decode(const GridFamily &, std::uint32_t s, int &col, int &row, int &dir) const override
+    {
+        int k;
+        p_.keyCodec().split(keyOf(s), col, row, dir, k);
+    }
+    std::uint32_t parent(const GridFamily &, std::uint32_t s) const override { return records_.parent(s); }
+    double g(const GridFamily &, std::uint32_t s) const override { return records_.g(s); }
+    void forEachClosed(const GridFamily &, const std::function<void(std::uint32_t)> &fn) const override
+    {
+        records_.forEach([&](std::uint32_t s, bool closed) {
+            if (closed) fn(s);
+        });
+    }
+    void clear() override
+    {
+        records_.reset();
+        states_.clear();
+    }
+    std::uint32_t intern(std::uint64_t key) const { return states_.intern(key); }
+    std::uint64_t keyOf(std::uint32_t id) const { return states_.key(id); }
 
-void ImprovedAStar::forEachClosed(const std::function<void(std::uint32_t)> &fn) const
-{
-    records_.forEach([&](std::uint32_t s, bool closed) {
-        if (closed) fn(s);
-    });
-}
+private:
+    ImprovedAStar &p_;
+    mutable StateInterner states_;  ///< state key -> dense state id
+    GrowingSearchSpace records_;
+};
 
 /// Successors of improved A*: state = (cell * 8 + heading) * K + straight run.
 struct ImprovedExpander
 {
     const ImprovedAStar *self;
-    const GridPlanner::Query &q;
+    const ImprovedNodes &nodes;
+    const GridFamily &f;
     ImprovedAStar::Key key;
     int K;
-    void split(std::uint32_t s, int &c, int &r, int &dir, int &k) const { key.split(self->keyOf(s), c, r, dir, k); }
-    double hAt(int c, int r) const { return q.goalIsState ? self->heuristicAt(c, r, q.goalCol, q.goalRow) : 0.0; }
+    void split(std::uint32_t s, int &c, int &r, int &dir, int &k) const { key.split(nodes.keyOf(s), c, r, dir, k); }
+    double hAt(int c, int r) const
+    {
+        const GridQuery &q = f.query();
+        return q.goalIsState ? self->heuristicAt(c, r, q.goalCol, q.goalRow) : 0.0;
+    }
     double heuristic(std::uint32_t s) const
     {
         int c, r, d, k;
@@ -175,15 +200,15 @@ struct ImprovedExpander
         int c, r, d, k;
         split(s, c, r, d, k);
         const int need = self->need_[d & 1];
-        return k >= need - need / 2 && self->isGoal(c, r, d);
+        return k >= need - need / 2 && f.isGoal(c, r, d);
     }
     bool moveOk(int c, int r, int d) const
     {
-        if (!self->points_) return self->moveValid(c, r, d);
+        if (!self->ip_.points) return f.moveValid(c, r, d);
         const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
         const OccupancyGrid &g = self->checker_->grid();
         if (!g.inBounds(nc, nr) || g.isBlocked(nc, nr)) return false;
-        if ((d & 1) && !self->allowCornerCutting() && (g.isBlocked(nc, r) || g.isBlocked(c, nr))) return false;
+        if ((d & 1) && !f.allowCornerCutting() && (g.isBlocked(nc, r) || g.isBlocked(c, nr))) return false;
         return self->checker_->isValidDetectionPoints(g.cellCenterX(nc), g.cellCenterY(nr));
     }
     template <class Emit>
@@ -192,7 +217,7 @@ struct ImprovedExpander
         int c, r, dir, k;
         split(s, c, r, dir, k);
         const bool mayTurn = k >= self->need_[dir & 1];
-        const double oHere = self->paperMode_ ? 0.0 : self->obstacleCostAt(c, r);
+        const double oHere = self->ip_.paperMode ? 0.0 : self->obstacleCostAt(c, r);
         for (int dd : {0, 1, -1})
         {
             if (dd != 0 && !mayTurn) continue;
@@ -200,9 +225,9 @@ struct ImprovedExpander
             if (!moveOk(c, r, d)) continue;
             const int nc = c + Moves::dcol[d], nr = r + Moves::drow[d];
             const int nk = std::min(dd == 0 ? k + 1 : 1, K - 1);
-            const std::uint32_t next = self->intern(key.of(nc, nr, d, nk));
-            double cost = self->stepLength(d);
-            if (!self->paperMode_) cost *= 1.0 + 0.5 * (oHere + self->obstacleCostAt(nc, nr));
+            const std::uint32_t next = nodes.intern(key.of(nc, nr, d, nk));
+            double cost = f.stepLength(d);
+            if (!self->ip_.paperMode) cost *= 1.0 + 0.5 * (oHere + self->obstacleCostAt(nc, nr));
             emit(next, cost, hAt(nc, nr));
         }
     }
@@ -222,20 +247,21 @@ struct PaperExpander : ImprovedExpander
 };
 }  // namespace
 
-SearchResult ImprovedAStar::runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
-                                      const ompl::base::PlannerTerminationCondition &ptc)
+SearchResult ImprovedNodes::search(GridFamily &f, const std::vector<std::uint32_t> &starts,
+                                   const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
 {
-    latticePath_.clear();
-    lastSmoothing_ = SmoothingResult();
-    auto cancelled = [&] { return ptc.eval(); };
-    if (paperMode_)
+    p_.latticePath_.clear();
+    p_.lastSmoothing_ = SmoothingResult();
+    if (p_.ip_.paperMode)
     {
-        PaperExpander ex{{this, q, keyCodec(), runStates_}};
-        return astar(records_, starts, ex, cancelled, &progressExpanded_, /*reopen=*/false);
+        PaperExpander ex{{&p_, *this, f, p_.keyCodec(), p_.runStates_}};
+        return astar(records_, starts, ex, cancelled, progress, /*reopen=*/false);
     }
-    ImprovedExpander ex{this, q, keyCodec(), runStates_};
-    return astar(records_, starts, ex, cancelled, &progressExpanded_);
+    ImprovedExpander ex{&p_, *this, f, p_.keyCodec(), p_.runStates_};
+    return astar(records_, starts, ex, cancelled, progress);
 }
+
+std::unique_ptr<GridNodes> ImprovedAStar::makeGridNodes() { return std::make_unique<ImprovedNodes>(*this); }
 
 namespace
 {
@@ -288,24 +314,25 @@ public:
 
 double ImprovedAStar::obstacleCostAtPose(const Pose2 &p) const
 {
-    if (checker_) return obstacleCostAtPoint(checker_->field(), checker_->grid(), delta_, voronoi_, p);
+    if (checker_) return obstacleCostAtPoint(checker_->field(), checker_->grid(), ip_.delta, ip_.voronoi, p);
     // any other validity checker: its clearance() when it computes one, else no obstacle cost
     const auto &vc = si_->getStateValidityChecker();
     if (!vc || vc->getSpecs().clearanceComputationType == ompl::base::StateValidityCheckerSpecs::NONE) return 0.0;
     setPose(obstacleScratch_, p);
     const double d = vc->clearance(obstacleScratch_);
-    return d > 0 ? delta_ / d : std::numeric_limits<double>::infinity();
+    return d > 0 ? ip_.delta / d : std::numeric_limits<double>::infinity();
 }
 
 std::unique_ptr<LatticeCostModel> ImprovedAStar::carCost() const
 {
-    if (paperMode_) return std::make_unique<PaperCost>(*this);
+    if (ip_.paperMode) return std::make_unique<PaperCost>(*this);
     return std::make_unique<IntegralCost>(*this);
 }
 
 bool ImprovedAStar::postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc)
 {
-    if (!smooth_ || path.getStateCount() < 3)
+    if (ip_.carLattice) return false;  // the car lattice's paths are drivable curves as searched
+    if (!ip_.smooth || path.getStateCount() < 3)
     {
         latticePath_ = toPoses(path);
         return false;

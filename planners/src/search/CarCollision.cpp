@@ -3,6 +3,7 @@
 #include "gridcar/planners/search/CarCollision.h"
 
 #include "gridcar/core/Angles.h"
+#include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 
@@ -76,9 +77,21 @@ SpaceCollision::SpaceCollision(ompl::base::SpaceInformationPtr si) : si_(std::mo
     if (!si_ || !dynamic_cast<const ompl::base::SE2StateSpace *>(si_->getStateSpace().get()))
         throw std::invalid_argument("the car lattice needs a state space derived from ompl::base::SE2StateSpace");
     scratch_ = si_->allocState();
+    scratchB_ = si_->allocState();
 }
 
-SpaceCollision::~SpaceCollision() { si_->freeState(scratch_); }
+SpaceCollision::~SpaceCollision()
+{
+    si_->freeState(scratch_);
+    si_->freeState(scratchB_);
+}
+
+bool SpaceCollision::segmentFree(const Pose2 &a, const Pose2 &b) const
+{
+    setPose(scratch_, a);
+    setPose(scratchB_, b);
+    return si_->isValid(scratch_) && si_->isValid(scratchB_) && si_->checkMotion(scratch_, scratchB_);
+}
 
 std::array<double, 4> SpaceCollision::extent() const
 {

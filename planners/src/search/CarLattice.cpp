@@ -18,6 +18,9 @@ CarLattice::CarLattice(const CarLatticeConfig &config) : config_(config)
 {
     if (!positive(config.cell)) throw std::invalid_argument("car lattice: cell size must be a finite number > 0");
     if (!positive(config.turnRadius)) throw std::invalid_argument("car lattice: turning radius must be a finite number > 0");
+    for (double r : config.extraRadii)
+        if (!positive(r) || r <= config.turnRadius)
+            throw std::invalid_argument("car lattice: every further arc radius must be a finite number > the turning radius");
     if (!positive(config.spacing)) throw std::invalid_argument("car lattice: sample spacing must be a finite number > 0");
     if (!(std::isfinite(config.reach) && config.reach >= 0.0))
         throw std::invalid_argument("car lattice: vehicle reach must be a finite number >= 0");
@@ -40,7 +43,32 @@ CarLattice::CarLattice(const CarLatticeConfig &config) : config_(config)
     {
         addStraight(h);
         for (int dir : {1, -1})
-            if (!addTurn(h, dir)) throw std::logic_error("car lattice: no turn primitive found");
+        {
+            if (!addTurn(h, dir, config.turnRadius)) throw std::logic_error("car lattice: no turn primitive found");
+            for (double r : config.extraRadii) addTurn(h, dir, r);
+        }
+    }
+    if (config.reverse)
+        for (int h = 0; h < config.headings; ++h) addReverse(h);
+}
+
+void CarLattice::addReverse(int h)
+{
+    // backwards from heading h = the forward primitives from the opposite heading, the body
+    // turned round: the same positions, every yaw + pi
+    const int n = headings(), back = (h + n / 2) % n;
+    const std::size_t forward = prims_[std::size_t(back)].size();  // only the forward ones
+    for (std::size_t k = 0; k < forward; ++k)
+    {
+        const LatticePrimitive &f = prims_[std::size_t(back)][k];
+        if (f.reverse) continue;
+        LatticePrimitive p = f;
+        p.from = h;
+        p.to = (f.to + n / 2) % n;
+        p.reverse = true;
+        for (Pose2 &q : p.samples) q.yaw = wrapYaw(q.yaw + M_PI);
+        p.samples.back().yaw = yaw_[std::size_t(p.to)];
+        prims_[std::size_t(h)].push_back(std::move(p));
     }
 }
 
@@ -71,13 +99,13 @@ void CarLattice::addStraight(int h)
     prims_[h].push_back(std::move(p));
 }
 
-bool CarLattice::addTurn(int h, int dir)
+bool CarLattice::addTurn(int h, int dir, double R)
 {
     const int n = headings();
     const int to = ((h + dir) % n + n) % n;
     const double t1 = yaw_[h], t2 = yaw_[to];
     const double delta = wrapAngle(t2 - t1);  // signed, |delta| < 90 degrees
-    const double R = config_.turnRadius, c = config_.cell, sg = delta > 0 ? 1.0 : -1.0;
+    const double c = config_.cell, sg = delta > 0 ? 1.0 : -1.0;
     // displacement of the arc alone (curvature sg / R from yaw t1 to t2)
     const double ax = sg * R * (std::sin(t2) - std::sin(t1)), ay = sg * R * (std::cos(t1) - std::cos(t2));
     const double u1x = std::cos(t1), u1y = std::sin(t1), u2x = std::cos(t2), u2y = std::sin(t2);
@@ -101,10 +129,13 @@ bool CarLattice::addTurn(int h, int dir)
             }
         }
     if (!std::isfinite(bestLen)) return false;
+    for (const LatticePrimitive &p : prims_[std::size_t(h)])
+        if (p.to == to && p.di == best.di && p.dj == best.dj) return true;  // a tighter turn lands there already
     best.from = h;
     best.to = to;
     best.length = bestLen;
     best.turn = delta;
+    best.radius = R;
     sample(best, bestS1);
     prims_[h].push_back(std::move(best));
     return true;
@@ -112,7 +143,7 @@ bool CarLattice::addTurn(int h, int dir)
 
 void CarLattice::sample(LatticePrimitive &p, double s1) const
 {
-    const double t1 = yaw_[p.from], R = config_.turnRadius;
+    const double t1 = yaw_[p.from], R = p.radius > 0 ? p.radius : config_.turnRadius;
     const double arc = R * std::abs(p.turn), sg = p.turn > 0 ? 1.0 : -1.0;
     const double travel = arc > 0 ? p.length * (1.0 + config_.reach / R) : p.length;
     const int n = std::max(1, int(std::ceil(travel / config_.spacing - 1e-9)));

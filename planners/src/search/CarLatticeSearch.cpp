@@ -186,7 +186,8 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
     std::vector<double> curveYaw;
     for (double y : yaws)
     {
-        CarCurve c = dubinsCurve(from, {g.x, g.y, y}, R);
+        // the curve family of the primitive set's directions: Reeds-Shepp when it reverses
+        CarCurve c = lattice_->config().reverse ? reedsSheppCurve(from, {g.x, g.y, y}, R) : dubinsCurve(from, {g.x, g.y, y}, R);
         if (c.length <= e + 2 * M_PI * R)
         {
             cand.push_back({c.length, double(curves.size())});
@@ -213,7 +214,8 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         if (!free) continue;
         double turn = 0;
         for (int seg = 0; seg < path.count; ++seg)
-            if (path.segments[std::size_t(seg)].steer != Steer::Straight) turn += path.segments[std::size_t(seg)].length / R;
+            if (path.segments[std::size_t(seg)].steer != Steer::Straight)
+                turn += std::abs(path.segments[std::size_t(seg)].length) / R;
         std::vector<Pose2> poses;
         poses.reserve(std::size_t(n));
         for (int i = 1; i <= n; ++i) poses.push_back(poseAt(i));

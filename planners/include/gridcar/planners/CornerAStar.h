@@ -10,6 +10,15 @@
 
 namespace gridcar
 {
+/// corner A*'s parameters (see CornerAStar).
+struct CornerAStarParams
+{
+    CornerWeights weights;  ///< `corner_weight_45/90/135` (paper C's values until set)
+    bool weightSet[3]{false, false, false};  ///< which of them were set explicitly (45, 90, 135)
+    bool physics{false};     ///< `weights` = physics
+    bool carLattice{true};   ///< `lattice` = car (`mode` = drivable)
+};
+
 /**
  * @brief Corner-weighted A* (paper C).
  *
@@ -48,40 +57,36 @@ public:
     explicit CornerAStar(const ompl::base::SpaceInformationPtr &si);
 
     void setup() override;
+    /// The weights in use after setup().
     const CornerWeights &weights() const { return weights_; }
+    /// corner A*'s own parameters.
+    const CornerAStarParams &cornerParams() const { return params_; }
 
-    double weight45() const { return userWeights_.w45; }
-    double weight90() const { return userWeights_.w90; }
-    double weight135() const { return userWeights_.w135; }
+    double weight45() const { return params_.weights.w45; }
+    double weight90() const { return params_.weights.w90; }
+    double weight135() const { return params_.weights.w135; }
     void setWeight45(double w);
     void setWeight90(double w);
     void setWeight135(double w);
     void setWeightMode(const std::string &mode);
-    std::string weightMode() const { return physics_ ? "physics" : "paper"; }
-    std::string mode() const { return drivable_ ? "drivable" : "paper"; }
+    std::string weightMode() const { return params_.physics ? "physics" : "paper"; }
+    std::string mode() const { return params_.carLattice ? "drivable" : "paper"; }
     void setMode(const std::string &m);
     /// `lattice`: car (= mode drivable) or grid (= mode paper), the switch's name shared with
     /// improved-astar.
-    std::string lattice() const { return drivable_ ? "car" : "grid"; }
+    std::string lattice() const { return params_.carLattice ? "car" : "grid"; }
     void setLattice(const std::string &l);
-    bool usesCarLattice() const override { return drivable_; }
+    bool usesCarLattice() const override { return params_.carLattice; }
     /// Corner weight (m) of a heading change of @p rad radians (linear between the table's).
     double turnWeight(double rad) const;
 
 protected:
-    std::size_t stateCount() const override;
-    std::vector<std::uint32_t> startStates(const Query &q) const override;
-    SearchResult runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
-                           const ompl::base::PlannerTerminationCondition &ptc) override;
-    void decode(std::uint32_t s, int &col, int &row, int &dir) const override;
+    std::unique_ptr<GridNodes> makeGridNodes() override;
     std::unique_ptr<LatticeCostModel> carCost() const override;
 
 private:
-    CornerWeights userWeights_;  ///< the declared parameters (paper C's values until set)
-    bool userSet_[3]{false, false, false};  ///< which of them were set explicitly (45, 90, 135)
-    CornerWeights weights_;      ///< in use (setup(): userWeights_ where set, else per `weights`)
-    bool physics_{false};
-    bool drivable_{true};
+    CornerAStarParams params_;
+    CornerWeights weights_;  ///< in use (setup(): params_.weights where set, else per `weights`)
 };
 
 }  // namespace gridcar

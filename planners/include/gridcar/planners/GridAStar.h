@@ -32,11 +32,7 @@ public:
     GridHeuristic heuristicKind() const { return heuristic_; }
 
 protected:
-    std::size_t stateCount() const override;
-    std::vector<std::uint32_t> startStates(const Query &q) const override;
-    SearchResult runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
-                           const ompl::base::PlannerTerminationCondition &ptc) override;
-    void decode(std::uint32_t s, int &col, int &row, int &dir) const override;
+    std::unique_ptr<GridNodes> makeGridNodes() override;
 
 private:
     GridHeuristic heuristic_;

@@ -1,62 +1,60 @@
 #pragma once
 /// @file GridPlanner.h
-/// @brief Common OMPL plumbing of the grid A* planners (one search core, search/AStar.h).
+/// @brief The OMPL planner class of gridcar's searches: parameters, the world (space,
+/// collision model), one solve() over a search family (GridFamily or CarFamily), the shared
+/// solver support.
 
 #include "gridcar/collision/FootprintChecker.h"
-#include "gridcar/core/Memory.h"
-#include "gridcar/planners/search/AStar.h"
-#include "gridcar/planners/search/CarLatticeSearch.h"
+#include "gridcar/planners/CarFamily.h"
+#include "gridcar/planners/GoalAdapter.h"
+#include "gridcar/planners/GridFamily.h"
+#include "gridcar/planners/SolverSupport.h"
 #include "gridcar/spaces/GridSE2StateSpace.h"
-#include "gridcar/spaces/Lattice.h"
 
 #include <ompl/base/Planner.h>
-#include <ompl/base/goals/GoalRegion.h>
-
 #include <ompl/geometric/PathGeometric.h>
 
-#include <array>
-#include <atomic>
-#include <functional>
 #include <cstdint>
 #include <memory>
 #include <set>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace gridcar
 {
-/// Row-major index of a map cell and back: the cell part of every grid planner's search state
-/// (32 bits: the dense lattices of the grid planners).
-struct CellIndex
+/// The parameters every gridcar planner declares (see GridPlanner for each).
+struct GridPlannerParams
 {
-    std::uint32_t width;
-    std::uint32_t of(int col, int row) const { return std::uint32_t(row) * width + std::uint32_t(col); }
-    void split(std::uint32_t index, int &col, int &row) const
-    {
-        col = int(index % width);
-        row = int(index / width);
-    }
+    bool allowCornerCutting{false};  ///< `allow_corner_cutting` (grid lattice)
+    bool freeStartHeading{false};    ///< `free_start_heading`
+    bool matchGoalHeading{false};    ///< `match_goal_heading`
+    double turningRadius{0.0};       ///< `turning_radius`, m; 0 = automatic
+    double maxMemoryMb{8192.0};      ///< `max_memory_mb`; 0 = none
+    double latticeCell{0.0};         ///< `lattice_cell`, m; 0 = automatic
+    int headings{16};                ///< `headings` (car lattice): 8 or 16
+    double heuristicWeight{1.1};     ///< `heuristic_weight` (car lattice), >= 1
 };
 
 /**
- * @brief Base of the grid planners: an ompl::base::Planner over a GridSE2StateSpace.
+ * @brief Base of gridcar's planners: an ompl::base::Planner that searches one of two families,
+ * the grid lattice (GridFamily, over a node type the planner supplies: makeGridNodes()) or the
+ * car lattice (CarFamily, with the cost model the planner supplies: carCost()), chosen by
+ * usesCarLattice(). What both share is composed in: the world (the SE(2) space's lattice
+ * geometry and one collision model, CarCollision: gridcar's FootprintChecker or any OMPL
+ * validity checker), the goal (GoalAdapter), the solver support (SolverSupport: memory
+ * bound, statistics and progress properties, the status rule).
  *
- * Handles what every grid planner shares: start / goal to lattice conversion, INVALID_START /
- * INVALID_GOAL (off the map or in collision), the termination condition (polled every 256
- * expansions), exact and approximate solutions (the expanded state closest to the goal by the
- * heuristic), PlannerData of the explored graph, the progress property "expanded nodes
- * INTEGER", and cached move validity: a move from a cell in one of 8 directions is valid when
- * the target is on the map, for a diagonal both side cells are free unless corner cutting is
- * allowed (parameter `allow_corner_cutting`, default false: the Moving AI rule), and the
- * vehicle footprint at the move's heading is free along the swept motion
- * (FootprintChecker::isMotionValid, both end poses included). With a validity checker that is
- * not gridcar's, SpaceInformation::isValid / checkMotion are used instead.
+ * Start: the start state (its yaw, or a free heading with `free_start_heading` = true); an
+ * invalid start is INVALID_START. Goals: a GoalState (its heading only if
+ * `match_goal_heading` is true), gridcar's PositionGoal, or any other GoalRegion; an
+ * unreachable goal pose is INVALID_GOAL. `solve()` honours its termination condition and
+ * `max_memory_mb`, returns the path to the explored state nearest the goal when it stops
+ * early (APPROXIMATE_SOLUTION or TIMEOUT), and sets itself up again when the application has
+ * set another validity checker or motion validator since setup().
  *
- * Start: the start state's cell and yaw (nearest of 8 directions), or a free heading with
- * `free_start_heading` = true. Goals: a GoalState (its cell; its heading only if
- * `match_goal_heading` is true), or any
- * other GoalRegion, tested with isSatisfied() on the cell centre when a state is expanded.
+ * Every parameter setter validates its value (std::invalid_argument), and redoes set-up
+ * before the next solve(); a parameter set explicitly that does not act in the family the
+ * planner is configured for makes setup() throw std::invalid_argument with the reason.
  */
 class GridPlanner : public ompl::base::Planner
 {
@@ -69,44 +67,41 @@ public:
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
     void getPlannerData(ompl::base::PlannerData &data) const override;
 
-    bool allowCornerCutting() const { return allowCornerCutting_; }
+    /// All common parameters.
+    const GridPlannerParams &commonParams() const { return params_; }
+    bool allowCornerCutting() const { return params_.allowCornerCutting; }
+    /// Grid lattice: a diagonal move may cut past a blocked side cell (default false: the
+    /// Moving AI rule).
     void setAllowCornerCutting(bool v);
-    bool matchGoalHeading() const { return matchGoalHeading_; }
+    bool matchGoalHeading() const { return params_.matchGoalHeading; }
+    /// A GoalState's heading must be matched (default false: any arrival heading).
+    void setMatchGoalHeading(bool v);
     /// When true the start state's yaw is ignored (any first move costs no corner).
-    bool freeStartHeading() const { return freeStartHeading_; }
-    void setFreeStartHeading(bool v)
-    {
-        freeStartHeading_ = v;
-        parameterSet("free_start_heading");
-    }
-    void setMatchGoalHeading(bool v)
-    {
-        matchGoalHeading_ = v;
-        parameterSet("match_goal_heading");
-    }
+    bool freeStartHeading() const { return params_.freeStartHeading; }
+    void setFreeStartHeading(bool v);
 
     /// Statistics of the last solve().
-    std::uint64_t expandedNodes() const { return lastExpanded_; }
+    std::uint64_t expandedNodes() const { return support_.expanded(); }
     /// The planner's own search cost of the last solution (metres, incl. any penalties).
-    double lastCost() const { return lastCost_; }
+    double lastCost() const { return support_.cost(); }
     /// Seconds spent in the search loop itself by the last solve() (no path building).
-    double lastSearchSeconds() const { return lastSearchSeconds_; }
+    double lastSearchSeconds() const { return support_.searchSeconds(); }
     /// Memory bound (`max_memory_mb`, MB; 0 = none; default 8192, a third of a 24 GB
     /// machine): solve() stops when the process's resident memory exceeds it (checked every
     /// 10 ms through the termination condition), and returns APPROXIMATE_SOLUTION with the
     /// path to the explored state nearest the goal, or ABORT when there is none;
-    /// lastStopReason() says why.
-    double maxMemoryMb() const { return maxMemoryMb_; }
-    void setMaxMemoryMb(double mb);  // takes effect at the next setup() for the per-map arrays
+    /// lastStopReason() says why. setup() refuses grid-lattice arrays larger than it.
+    double maxMemoryMb() const { return params_.maxMemoryMb; }
+    void setMaxMemoryMb(double mb);
     /// Why the last solve() returned no exact solution though not out of time: stopped at the
     /// memory bound, or (a planner that smooths) its smoothed path failed checkDrivable() and is
     /// returned as an approximate solution. Empty otherwise.
-    const std::string &lastStopReason() const { return lastStopReason_; }
+    const std::string &lastStopReason() const { return support_.stopReason(); }
 
     /// Turning radius of the car lattice's arcs (`turning_radius`, m); 0 = automatic: the
     /// vehicle's R_min with gridcar's checker, the space's radius on OMPL's Dubins or
     /// Reeds-Shepp space, else the default car's (VehicleParams{}: 3.86 m).
-    double turningRadiusParam() const { return turningRadius_; }
+    double turningRadiusParam() const { return params_.turningRadius; }
     void setTurningRadius(double r);
     /// The turning radius in use (see turningRadiusParam()).
     double turningRadius() const;
@@ -114,73 +109,32 @@ public:
     /// validity checker the default car with its steering set to turningRadius().
     const VehicleParams &vehicle() const { return checker_ ? checker_->vehicle() : genericVehicle_; }
 
-    // The car lattice (search/CarLattice.h), for the planners that search it.
     /// Lattice cell size in metres; 0 = automatic (lattice_cell). Car lattice: the multiple of
     /// the map resolution nearest to min(width, R_min) / 4, at least one map cell (R_min / 4
     /// without gridcar's checker). Grid lattice: the map's cells on gridcar's space; on any
     /// other SE(2) space cells of this size over the space's bounds (automatic: R_min / 4).
-    double latticeCell() const { return latticeCell_; }
+    double latticeCell() const { return params_.latticeCell; }
     void setLatticeCell(double m);
     /// Heading count of the car lattice: 8 or 16 (`headings`).
-    int latticeHeadings() const { return latticeHeadings_; }
+    int latticeHeadings() const { return params_.headings; }
     void setLatticeHeadings(int h);
     /// Heuristic weight on the car lattice (`heuristic_weight`, >= 1; see CarLatticeQuery).
-    double heuristicWeight() const { return heuristicWeight_; }
+    double heuristicWeight() const { return params_.heuristicWeight; }
     void setHeuristicWeight(double w);
     /// True if the planner, as configured, searches the car lattice.
     virtual bool usesCarLattice() const { return false; }
     /// The car lattice in use after setup() (null on the grid lattice).
-    const CarLatticeSearch *carSearch() const { return car_.get(); }
-    /// The configuration setup() gives the car lattice for this map and vehicle.
+    const CarLatticeSearch *carSearch() const { return usesCarLattice() ? car_.search() : nullptr; }
+    /// The primitive set setup() gives the car lattice for this map and vehicle.
     CarLatticeConfig carLatticeConfig() const;
 
-    /// The query in lattice terms.
-    struct Query
-    {
-        int startCol{0}, startRow{0};
-        int startDir{-1};  ///< -1: free start heading
-        bool goalIsState{false};
-        int goalCol{0}, goalRow{0};
-        int goalDir{-1};  ///< -1: any heading
-    };
-
-
-    // Queries the expanders of the search core use (valid after setup()).
-    /// True if the cell (with arrival direction @p dir, -1 = none) satisfies the goal.
-    bool isGoal(int col, int row, int dir) const;
-    /// Cached validity of the move from (col, row) in direction d (see the class comment).
-    bool moveValid(int col, int row, int d) const
-    {
-        const std::uint8_t c = moveCache_[(std::size_t(row) * std::size_t(width_) + std::size_t(col)) * 8 + std::size_t(d)];
-        if (c != 0) return c == 1;
-        return fillMoveCache(col, row, d);
-    }
-    /// Step length of direction d in metres (resolution or resolution * sqrt 2).
-    double stepLength(int d) const { return (d & 1) ? diagStep_ : straightStep_; }
-    /// The cell indexing of this map (after setup()).
-    CellIndex cellIndex() const { return {std::uint32_t(width_)}; }
-    /// Octile distance in metres between two cells (admissible for 8-connected moves).
-    double octile(int c0, int r0, int c1, int r1) const;
-
 protected:
-    /// Number of search states (cells x headings the planner distinguishes).
-    virtual std::size_t stateCount() const = 0;
-    /// The search states a query starts from.
-    virtual std::vector<std::uint32_t> startStates(const Query &q) const = 0;
-    /// Runs the search (through gridcar::astar) for the query.
-    virtual SearchResult runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
-                                   const ompl::base::PlannerTerminationCondition &ptc) = 0;
-    /// Cell (and arrival direction, -1 if the state has none) of a search state.
-    virtual void decode(std::uint32_t s, int &col, int &row, int &dir) const = 0;
-    /// True if the planner searches the dense SearchSpace `search_` (allocated by setup());
-    /// a planner with its own search space returns false and overrides the three below.
-    virtual bool usesDenseSearch() const { return true; }
-    /// Parent and g of a state of the last search.
-    virtual std::uint32_t parentOf(std::uint32_t s) const { return search_->parent(s); }
-    virtual double gOf(std::uint32_t s) const { return search_->g(s); }
-    /// Calls fn(s) for every state the last search expanded.
-    virtual void forEachClosed(const std::function<void(std::uint32_t)> &fn) const;
-    /// Hook for a planner that post-processes its lattice path (default: none), polling @p ptc.
+    /// The grid lattice's node type for this planner as configured (called by setup() when
+    /// usesCarLattice() is false; default: none, a planner of the car lattice only).
+    virtual std::unique_ptr<GridNodes> makeGridNodes() { return nullptr; }
+    /// The cost the car lattice search minimises (default: length).
+    virtual std::unique_ptr<LatticeCostModel> carCost() const { return std::make_unique<LengthCost>(); }
+    /// Hook for a planner that post-processes its path (default: none), polling @p ptc.
     /// Returns true when it replaced @p path.
     virtual bool postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc)
     {
@@ -188,8 +142,6 @@ protected:
         (void)ptc;
         return false;
     }
-    /// The cost the car lattice search minimises (a planner that uses it overrides this).
-    virtual std::unique_ptr<LatticeCostModel> carCost() const { return std::make_unique<LengthCost>(); }
     /// Every parameter setter ends here: set-up is redone before the next solve() (whenever the
     /// parameter is set, before or after setup()), and the name is remembered for setup()'s
     /// check that it acts in the planner as configured.
@@ -206,73 +158,39 @@ protected:
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).
     void markNotExact(const std::string &why) { notExactBecause_ = why; }
-    /// Declares `lattice_cell` and `headings` (for the planners that search the car lattice).
+    /// Declares `headings` and `heuristic_weight` (for the planners that search the car lattice).
     void declareCarLatticeParams();
+    /// Size of the lattice cells of the grid family (after setup()).
+    double cellSize() const { return space_->cellSize(); }
 
-
-    std::shared_ptr<GridSE2StateSpace> space_;
+    std::shared_ptr<GridSE2StateSpace> space_;  ///< lattice geometry (after setup())
     const FootprintChecker *checker_{nullptr};  ///< null when the validity checker is not ours
-    int width_{0}, height_{0};
-    double straightStep_{1.0}, diagStep_{1.4142135623730951};
-    Query query_;
-    std::unique_ptr<SearchSpace> search_;
-    /// Read by OMPL's Benchmark progress thread while solve() writes it.
-    std::atomic<std::uint64_t> progressExpanded_{0};
 
 private:
-    ompl::base::PlannerStatus solveCarLattice(const ompl::base::PlannerTerminationCondition &ptc);
-    bool carGoal(CarLatticeQuery &q, ompl::base::PlannerStatus &bad);
-    void getCarPlannerData(ompl::base::PlannerData &data) const;
-    double latticeCell_{0.0};
-    int latticeHeadings_{16};
-    double heuristicWeight_{1.1};
-    std::unique_ptr<CarLatticeSearch> car_;
-    mutable std::vector<ompl::base::State *> carDataStates_;
-    bool checkMoveUncached(int col, int row, int d) const;
-    bool fillMoveCache(int col, int row, int d) const;
-    bool poseValid(double x, double y, double yaw) const;
     /// On an SE(2) space that is not gridcar's: the lattice geometry from the bounds and
     /// lattice_cell (GridPlannerSpace.cpp).
     std::shared_ptr<GridSE2StateSpace> ownGridSpace();
     VehicleParams genericVehicle() const;
-    std::shared_ptr<GridSE2StateSpace> ownSpace_;
-    VehicleParams genericVehicle_;
-    /// The validity checker and motion validator setup() built on, held so that what was
-    /// built on them (checker_, the move cache, the car lattice) never outlives them; solve()
-    /// sets up again when the application has set others on the SpaceInformation.
-    ompl::base::StateValidityCheckerPtr builtOnChecker_;
-    ompl::base::MotionValidatorPtr builtOnMotion_;
-    bool builtOnCurrentWorld() const;
     /// The first valid start of the problem, every solve() (OMPL's input states hand each
     /// start out once; a second solve() without clear() must still see it).
     const ompl::base::State *currentStart();
-    double turningRadius_{0.0};
-
-    /// @p ptc or'ed with the memory bound (and the stop state reset).
-    ompl::base::PlannerTerminationCondition withMemoryBound(const ompl::base::PlannerTerminationCondition &ptc);
-    /// The status a solve() that stopped at the memory bound returns, with a warning.
-    ompl::base::PlannerStatus memoryStatus(bool pathAdded) const;
-    double maxMemoryMb_{8192.0};
-    std::string tooBig_;  ///< set by setup() when the grid lattice's arrays exceed the bound
-    bool memoryStopped_{false};
-    std::string lastStopReason_;
-    std::string notExactBecause_;  ///< set through markNotExact() during one solve()
-    std::set<std::string> setParams_;  ///< every parameter set explicitly (parameterSet())
     /// std::invalid_argument naming a parameter set explicitly that does not act as configured.
     void checkParametersAct() const;
-    bool allowCornerCutting_{false};
-    bool matchGoalHeading_{false};
-    bool freeStartHeading_{false};
-    const ompl::base::GoalRegion *goalRegion_{nullptr};
-    mutable ZeroedBytes moveCache_;  ///< per (cell, d): 0 unknown, 1 valid, 2 invalid
-    std::atomic<std::uint64_t> lastExpanded_{0};
-    // read by the progress properties, which OMPL's Benchmark polls from another thread
-    std::atomic<double> lastCost_{0.0};
-    std::atomic<double> lastSearchSeconds_{0.0};
-    std::vector<std::uint32_t> lastPath_;
-    ompl::base::State *scratchA_{nullptr}, *scratchB_{nullptr};
-    void freeDataStates();
-    mutable std::unordered_map<std::uint32_t, ompl::base::State *> dataStates_;  ///< for getPlannerData()
+
+    GridPlannerParams params_;
+    SolverSupport support_;
+    GoalAdapter goals_;
+    GoalTarget goal_;
+    /// The collision model of the world setup() was built on (both families use it).
+    std::shared_ptr<CarCollision> collision_;
+    GridFamily grid_;
+    CarFamily car_;
+    std::string tooBig_;  ///< set by setup() when the grid lattice's arrays exceed the bound
+    std::string notExactBecause_;  ///< set through markNotExact() during one solve()
+    std::set<std::string> setParams_;  ///< every parameter set explicitly (parameterSet())
+    std::shared_ptr<GridSE2StateSpace> ownSpace_;
+    VehicleParams genericVehicle_;
+    mutable PlannerDataStates dataStates_;  ///< for getPlannerData()
 };
 
 }  // namespace gridcar

@@ -7,7 +7,6 @@
 #include "gridcar/planners/SmoothedPlanner.h"
 
 #include <string>
-#include "gridcar/planners/search/StateInterner.h"
 
 namespace gridcar
 {
@@ -68,6 +67,18 @@ namespace gridcar
  * Paper I: Yang Yao et al., "Research on intelligent vehicle path planning based on improved A*
  * algorithm", 2020, sections 3.1-3.5.
  */
+/// improved A*'s parameters (see ImprovedAStar).
+struct ImprovedAStarParams
+{
+    bool paperMode{true};          ///< `mode` = paper (else integral)
+    bool carLattice{true};         ///< `lattice` = car (else grid)
+    std::string heuristic{"auto"}; ///< `heuristic` (grid lattice): auto, arc, euclidean, octile
+    double delta{1.0};             ///< `delta`, the obstacle-cost gain
+    bool voronoi{false};           ///< `obstacle_cost` = voronoi (else inverse)
+    bool points{false};            ///< `contour` = points (else fcl; grid lattice)
+    bool smooth{true};             ///< `smooth` (grid lattice)
+};
+
 class ImprovedAStar : public GridPlanner, public SmoothingReport
 {
 public:
@@ -76,26 +87,28 @@ public:
 
     void setup() override;
     void clear() override;
+    /// improved A*'s own parameters.
+    const ImprovedAStarParams &improvedParams() const { return ip_; }
 
-    std::string mode() const { return paperMode_ ? "paper" : "integral"; }
+    std::string mode() const { return ip_.paperMode ? "paper" : "integral"; }
     void setMode(const std::string &m);
-    std::string heuristic() const { return heuristic_; }
+    std::string heuristic() const { return ip_.heuristic; }
     void setHeuristic(const std::string &h);
-    double delta() const { return delta_; }
+    double delta() const { return ip_.delta; }
     void setDelta(double d);
-    std::string obstacleCost() const { return voronoi_ ? "voronoi" : "inverse"; }
+    std::string obstacleCost() const { return ip_.voronoi ? "voronoi" : "inverse"; }
     void setObstacleCost(const std::string &c);
-    std::string contour() const { return points_ ? "points" : "fcl"; }
+    std::string contour() const { return ip_.points ? "points" : "fcl"; }
     void setContour(const std::string &c);
-    bool smooth() const { return smooth_; }
+    bool smooth() const { return ip_.smooth; }
     void setSmooth(bool s)
     {
-        smooth_ = s;
+        ip_.smooth = s;
         parameterSet("smooth");
     }
-    std::string lattice() const { return carLattice_ ? "car" : "grid"; }
+    std::string lattice() const { return ip_.carLattice ? "car" : "grid"; }
     void setLattice(const std::string &l);
-    bool usesCarLattice() const override { return carLattice_; }
+    bool usesCarLattice() const override { return ip_.carLattice; }
     /// heuristic, smooth and contour are the grid search's (paper I's section 3), refused on
     /// the car lattice, with allow_corner_cutting.
     std::vector<std::string> gridLatticeOnlyParams() const override
@@ -119,43 +132,30 @@ public:
     const SmoothingResult &lastSmoothing() const override
     {
         static const SmoothingResult none;
-        return carLattice_ ? none : lastSmoothing_;
+        return ip_.carLattice ? none : lastSmoothing_;
     }
     /// The lattice path of the last solve() before post-processing (world poses).
     const std::vector<Pose2> &lastLatticePath() const { return latticePath_; }
     const std::vector<Pose2> &lastRawPath() const override
     {
         static const std::vector<Pose2> none;
-        return !carLattice_ && smooth_ && !lastSmoothing_.path.empty() ? latticePath_ : none;
+        return !ip_.carLattice && ip_.smooth && !lastSmoothing_.path.empty() ? latticePath_ : none;
     }
 
 protected:
-    std::size_t stateCount() const override;
-    std::vector<std::uint32_t> startStates(const Query &q) const override;
-    SearchResult runSearch(const Query &q, const std::vector<std::uint32_t> &starts,
-                           const ompl::base::PlannerTerminationCondition &ptc) override;
-    void decode(std::uint32_t s, int &col, int &row, int &dir) const override;
-    bool usesDenseSearch() const override { return false; }
-    std::uint32_t parentOf(std::uint32_t s) const override { return records_.parent(s); }
-    double gOf(std::uint32_t s) const override { return records_.g(s); }
-    void forEachClosed(const std::function<void(std::uint32_t)> &fn) const override;
+    std::unique_ptr<GridNodes> makeGridNodes() override;
     bool postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc) override;
     std::unique_ptr<LatticeCostModel> carCost() const override;
 
 private:
     friend struct ImprovedExpander;
+    friend class ImprovedNodes;
     mutable ompl::base::State *obstacleScratch_{nullptr};
-    bool paperMode_{true};
-    bool carLattice_{true};
-    std::string heuristic_{"auto"};
-    double delta_{1.0};
-    bool voronoi_{false};
-    bool points_{false};
-    bool smooth_{true};
+    ImprovedAStarParams ip_;
     int need_[2]{0, 0};
     int runStates_{1};      ///< K: values of the straight-run counter (0 .. K-1)
     double arcFactor_{1.0}; ///< phi_max / sin(phi_max)
-    int hKind_{0};          ///< 0 arc, 1 euclidean, 2 octile (resolved from heuristic_ and mode)
+    int hKind_{0};          ///< 0 arc, 1 euclidean, 2 octile (resolved from ip_.heuristic and mode)
     /// Lattice key of a state, ((cell * 8 + heading) * K + run), and back.
     struct Key
     {
@@ -176,10 +176,6 @@ private:
     Key keyCodec() const;
     /// Lattice key ((cell * 8 + heading) * K + run) of a state; search states are compact ids
     /// handed out in order of discovery (the lattice of a 0.05 m map exceeds 2^32 keys).
-    std::uint32_t intern(std::uint64_t key) const;
-    std::uint64_t keyOf(std::uint32_t id) const { return states_.key(id); }
-    mutable StateInterner states_;  ///< state key -> dense state id
-    GrowingSearchSpace records_;
     SmoothingResult lastSmoothing_;
     std::vector<Pose2> latticePath_;
 };

@@ -2,8 +2,8 @@
 /// @file AStar.h
 /// @brief The one A* search loop shared by every grid planner.
 
-#include "gridcar/planners/search/OpenList.h"
-#include "gridcar/planners/search/PollSchedule.h"
+#include "gridcar/planners/search/detail/OpenList.h"
+#include "gridcar/planners/search/detail/PollSchedule.h"
 #include "gridcar/planners/search/SearchSpace.h"
 
 #include <atomic>

@@ -15,7 +15,9 @@
 
 namespace gridcar
 {
-/// Collision queries of CarLatticeSearch.
+/// The one collision model of the search families: the car lattice (CarLatticeSearch) and the
+/// grid lattice (GridFamily, whose move cache decorates it) both ask it, whether the validity
+/// checker is gridcar's (FootprintCollision) or any OMPL application's (SpaceCollision).
 class CarCollision
 {
 public:
@@ -41,6 +43,13 @@ public:
     virtual bool mayStandAt(double x, double y) const = 0;
     /// True if the answers are relaxations (the heuristic is then a lower bound).
     virtual bool relaxed() const = 0;
+    /// The straight move from @p a to @p b at their (equal) heading: both end poses and the
+    /// swept motion between them are free (the grid lattice's 8-connected moves).
+    virtual bool segmentFree(const Pose2 &a, const Pose2 &b) const = 0;
+    /// The map's cells when the model has them (gridcar's checker), else null.
+    virtual const OccupancyGrid *cells() const { return nullptr; }
+    /// A point vehicle on gridcar's checker: a grid move is free when its target cell is.
+    virtual bool pointVehicle() const { return false; }
 };
 
 /// gridcar's own checker: the distance field's disc cover and inscribed discs, the rectangle
@@ -57,6 +66,9 @@ public:
     bool mayStandOnAxis(double x, double y, int h) const override;
     bool mayStandAt(double x, double y) const override;
     bool relaxed() const override { return true; }
+    bool segmentFree(const Pose2 &a, const Pose2 &b) const override { return c_.isMotionValid(a, b); }
+    const OccupancyGrid *cells() const override { return &c_.grid(); }
+    bool pointVehicle() const override { return c_.vehicle().isPoint(); }
 
 private:
     const FootprintChecker &c_;
@@ -85,10 +97,13 @@ public:
     bool mayStandOnAxis(double x, double y, int h) const override;
     bool mayStandAt(double, double) const override { return true; }
     bool relaxed() const override { return false; }
+    /// The application's checker at both ends and its motion validator between them.
+    bool segmentFree(const Pose2 &a, const Pose2 &b) const override;
 
 private:
     ompl::base::SpaceInformationPtr si_;
     ompl::base::State *scratch_;
+    ompl::base::State *scratchB_;
     std::vector<double> yaws_;
 };
 

@@ -17,9 +17,21 @@ struct CarLatticeConfig
 {
     double cell{0.5};        ///< m between lattice nodes
     int headings{16};        ///< 8 or 16
-    double turnRadius{2.0};  ///< m, radius of every turning arc (>= the vehicle's R_min)
+    double turnRadius{2.0};  ///< m, radius of the tightest turning arcs (>= the vehicle's R_min)
     double spacing{0.05};    ///< m: no body point moves more than this between two sampled poses
     double reach{0.0};       ///< m, farthest body point from the reference point (VehicleParams)
+    /// m, further arc radii (each > turnRadius): a turn primitive per radius and side where it
+    /// ends on a node (and heading) that no tighter turn of this set reaches
+    std::vector<double> extraRadii;
+    /// Also the primitives driven backwards (each forward one mirrored: the body keeps its
+    /// heading, the reference point moves the other way)
+    bool reverse{false};
+    bool operator==(const CarLatticeConfig &o) const
+    {
+        return cell == o.cell && headings == o.headings && turnRadius == o.turnRadius && extraRadii == o.extraRadii &&
+               reverse == o.reverse && spacing == o.spacing && reach == o.reach;
+    }
+    bool operator!=(const CarLatticeConfig &o) const { return !(*this == o); }
 };
 
 /// One motion primitive from a node at heading `from` (lattice frame, start at the origin).
@@ -28,7 +40,9 @@ struct LatticePrimitive
     int di{0}, dj{0};   ///< end node offset in lattice cells (i along x, j along y)
     int from{0}, to{0};  ///< start and end heading
     double length{0.0};  ///< m, arc length
-    double turn{0.0};    ///< rad, signed heading change (0 for a straight)
+    double turn{0.0};    ///< rad, signed heading change of the body (0 for a straight)
+    double radius{0.0};  ///< m, radius of its arc (0 for a straight)
+    bool reverse{false}; ///< driven backwards (the body at heading `from` .. `to` throughout)
     /// Poses along it, relative to the start node, spaced so that no body point moves more than
     /// the configured spacing between two of them; the start pose excluded, the end included.
     std::vector<Pose2> samples;
@@ -79,7 +93,8 @@ public:
 
 private:
     void addStraight(int h);
-    bool addTurn(int h, int dir);
+    bool addTurn(int h, int dir, double radius);
+    void addReverse(int h);
     void sample(LatticePrimitive &p, double s1) const;
 
     CarLatticeConfig config_;

@@ -8,7 +8,7 @@
 #include "gridcar/planners/search/CarCollision.h"
 #include "gridcar/planners/search/CarLattice.h"
 #include "gridcar/planners/search/ObstacleHeuristic.h"
-#include "gridcar/planners/search/StateInterner.h"
+#include "gridcar/planners/search/detail/StateInterner.h"
 
 #include <atomic>
 #include <cstdint>

@@ -3,7 +3,7 @@
 /// @brief The obstacle-aware heuristic of the car lattice: shortest 2D distances to the goal
 /// over the lattice nodes where the vehicle fits, computed backwards from the goal on demand.
 
-#include "gridcar/planners/search/PollSchedule.h"
+#include "gridcar/planners/search/detail/PollSchedule.h"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,8 @@
 #pragma once
 /// @file OpenList.h
 /// @brief Open lists of the search core: integer keys, a lazy-deletion heap and a decrease-key heap.
+/// Internal to the search core (detail/): installed because the search loop's header includes
+/// it, not part of gridcar's API.
 
 #include <algorithm>
 #include <cstdint>

@@ -1,6 +1,8 @@
 #pragma once
 /// @file PollSchedule.h
 /// @brief When a search polls its termination condition: by count, adapted to time.
+/// Internal to the search core (detail/): installed because the search loop's header includes
+/// it, not part of gridcar's API.
 
 #include <chrono>
 #include <cstdint>

@@ -3,6 +3,8 @@
 /// @brief Dense ids for the sparse 64-bit keys of a lattice's states, in the order a search
 /// discovers them: the one hash of a state (key -> id); its search record then sits in a
 /// GrowingSearchSpace by id.
+/// Internal to the search core (detail/): installed because the search loop's header includes
+/// it, not part of gridcar's API.
 
 #include <cstdint>
 #include <algorithm>

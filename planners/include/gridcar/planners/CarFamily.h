@@ -1,0 +1,48 @@
+#pragma once
+/// @file CarFamily.h
+/// @brief The car-lattice search family: a CarLatticeSearch over a primitive set
+/// (CarLatticeConfig) and the collision model, with a cost model per query.
+
+#include "gridcar/planners/GoalAdapter.h"
+#include "gridcar/planners/GridFamily.h"
+#include "gridcar/planners/SolverSupport.h"
+#include "gridcar/planners/search/CarLatticeSearch.h"
+
+#include <ompl/base/PlannerData.h>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+
+namespace gridcar
+{
+/**
+ * @brief The car lattice as a search family: set up from a plain CarLatticeConfig (the
+ * primitive set: cell, headings, turning radius, sample spacing) over the collision model;
+ * the search and its lattice are kept while both stay the same. A query aims at the goal
+ * target: a GoalState or PositionGoal is joined by the analytic expansion (a Dubins curve,
+ * footprint checked) or reached at a node within the yaw tolerance, a sampleable region is
+ * aimed at and decided by the region, any other region is searched in Dijkstra order.
+ */
+class CarFamily
+{
+public:
+    /// (Re)builds the search when @p cfg or @p collision differ from the last set-up.
+    void setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision);
+    /// The search in use (null before setup()).
+    const CarLatticeSearch *search() const { return search_.get(); }
+
+    /// One query: start pose (any lattice heading when @p freeStartHeading), heuristic weight
+    /// @p weight, the goal, the cost model.
+    FamilyRun solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start, bool freeStartHeading,
+                    double weight, const GoalTarget &goal, const LatticeCostModel &cost,
+                    const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress);
+    /// The explored graph of the last search.
+    void plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const;
+
+private:
+    std::shared_ptr<CarCollision> collision_;
+    std::unique_ptr<CarLatticeSearch> search_;
+};
+
+}  // namespace gridcar

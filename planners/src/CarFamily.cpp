@@ -1,0 +1,74 @@
+/// @file CarFamily.cpp
+/// @brief The car lattice as a search family: set-up, one query, the explored graph.
+#include "gridcar/planners/CarFamily.h"
+
+#include "gridcar/spaces/OmplAdapters.h"
+
+#include <ompl/geometric/PathGeometric.h>
+
+#include <chrono>
+
+namespace gridcar
+{
+void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision)
+{
+    if (collision == collision_ && search_ && search_->lattice().config() == cfg) return;
+    collision_ = std::move(collision);
+    search_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(cfg));
+}
+
+FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
+                           bool freeStartHeading, double weight, const GoalTarget &goal, const LatticeCostModel &cost,
+                           const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
+{
+    CarLatticeQuery q;
+    q.start = toPose(start);
+    q.freeStartHeading = freeStartHeading;
+    q.weight = weight;
+    q.goal = goal.pose;
+    switch (goal.kind)
+    {
+        case GoalTarget::Kind::State:  // a node at the goal pose, or the analytic expansion
+            q.goalYawTolerance = goal.yawTolerance;
+            break;
+        case GoalTarget::Kind::Position:
+            q.goalYawTolerance = goal.yawTolerance;
+            q.inGoal = goal.satisfied;
+            break;
+        case GoalTarget::Kind::SampledRegion:  // aimed at; the region decides
+            q.shoot = false;
+            q.inGoal = goal.satisfied;
+            break;
+        case GoalTarget::Kind::Region:  // nothing to aim at: Dijkstra order until a node satisfies it
+            q.aim = false;
+            q.shoot = false;
+            q.inGoal = goal.satisfied;
+            break;
+    }
+    FamilyRun run;
+    const auto t0 = std::chrono::steady_clock::now();
+    const CarLatticeResult r = search_->run(q, cost, cancelled, progress);
+    run.searchSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    run.expanded = r.expanded;
+    run.cost = r.cost;
+    run.end.cancelled = r.outcome == SearchOutcome::Cancelled;
+    run.end.reached = r.exact;
+    // no path and not stopped: the vehicle fits at no lattice heading at the start
+    run.end.noPath = ompl::base::PlannerStatus::INVALID_START;
+    run.end.noPathWhy = "the vehicle fits at no lattice heading at the start";
+    if (!r.path.empty()) run.end.path = std::make_shared<ompl::geometric::PathGeometric>(toPath(si, r.path));
+    return run;
+}
+
+void CarFamily::plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const
+{
+    if (!search_) return;
+    search_->forEachExpanded([&](const Pose2 &node, const Pose2 &parent) {
+        if (node.x == parent.x && node.y == parent.y && node.yaw == parent.yaw)
+            data.addStartVertex(ompl::base::PlannerDataVertex(states.at(0, node)));
+        else
+            data.addEdge(ompl::base::PlannerDataVertex(states.at(0, parent)), ompl::base::PlannerDataVertex(states.at(0, node)));
+    });
+}
+
+}  // namespace gridcar

@@ -1,0 +1,106 @@
+/// @file GridPlannerParams.cpp
+/// @brief GridPlanner's parameter setters (each validates, then redoes set-up) and the car
+/// lattice's primitive set from them.
+#include "gridcar/planners/GridPlanner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gridcar
+{
+void GridPlanner::declareCarLatticeParams()
+{
+    declareParam<int>("headings", this, &GridPlanner::setLatticeHeadings, &GridPlanner::latticeHeadings, "8,16");
+    declareParam<double>("heuristic_weight", this, &GridPlanner::setHeuristicWeight, &GridPlanner::heuristicWeight,
+                         "1.:0.05:3.");
+}
+
+void GridPlanner::setAllowCornerCutting(bool v)
+{
+    params_.allowCornerCutting = v;
+    parameterSet("allow_corner_cutting");
+}
+
+void GridPlanner::setFreeStartHeading(bool v)
+{
+    params_.freeStartHeading = v;
+    parameterSet("free_start_heading");
+}
+
+void GridPlanner::setMatchGoalHeading(bool v)
+{
+    params_.matchGoalHeading = v;
+    parameterSet("match_goal_heading");
+}
+
+void GridPlanner::setMaxMemoryMb(double mb)
+{
+    if (!std::isfinite(mb) || mb < 0.0 || mb > 1e7)
+        throw std::invalid_argument(getName() + ": max_memory_mb must be 0 (no bound) or a size in MB up to 1e7");
+    params_.maxMemoryMb = mb;
+    parameterSet("max_memory_mb");
+}
+
+void GridPlanner::setTurningRadius(double r)
+{
+    if (!std::isfinite(r) || r < 0.0 || r > 1e4)
+        throw std::invalid_argument(getName() + ": turning_radius must be 0 (automatic) or a length in (0, 10000] m");
+    params_.turningRadius = r;
+    parameterSet("turning_radius");
+}
+
+void GridPlanner::setHeuristicWeight(double w)
+{
+    if (!std::isfinite(w) || w < 1.0 || w > 100.0)
+        throw std::invalid_argument(getName() + ": heuristic_weight must be a number in [1, 100]");
+    params_.heuristicWeight = w;
+    parameterSet("heuristic_weight");
+}
+
+void GridPlanner::setLatticeCell(double m)
+{
+    if (!std::isfinite(m) || m < 0.0 || m > 1000.0)
+        throw std::invalid_argument(getName() + ": lattice_cell must be 0 (automatic) or a length in (0, 1000] m");
+    params_.latticeCell = m;
+    parameterSet("lattice_cell");
+}
+
+void GridPlanner::setLatticeHeadings(int h)
+{
+    if (h != 8 && h != 16)
+        throw std::invalid_argument(getName() + ": headings must be 8 or 16 on the car lattice (the directions of lattice "
+                                                "vectors: 32 or 72 equal steps do not land on nodes), got " +
+                                    std::to_string(h));
+    params_.headings = h;
+    parameterSet("headings");
+}
+
+CarLatticeConfig GridPlanner::carLatticeConfig() const
+{
+    const double rmin = turningRadius();
+    CarLatticeConfig cfg;
+    cfg.headings = params_.headings;
+    if (checker_)
+    {
+        const VehicleParams &v = checker_->vehicle();
+        const double res = checker_->grid().resolution();
+        const double want = std::min(v.isPoint() ? 4 * res : v.width, rmin > 0 ? rmin : 4 * res) / 4;
+        cfg.cell = params_.latticeCell > 0 ? params_.latticeCell : res * std::max(1.0, std::round(want / res));
+        cfg.spacing = std::min(res, 0.1);
+        cfg.reach = checker_->reach();
+    }
+    else
+    {
+        // any other validity checker: poses no farther apart than 0.1 m or OMPL's longest
+        // valid segment, whichever is shorter (the checker sees poses only)
+        cfg.cell = params_.latticeCell > 0 ? params_.latticeCell : rmin / 4;
+        cfg.spacing = std::min({0.1, cfg.cell / 2, si_->getStateSpace()->getLongestValidSegmentLength()});
+        cfg.reach = 0.0;
+    }
+    // arcs 1 % wider than R_min: sampled curves then stay within K_max by a clear margin
+    cfg.turnRadius = rmin > 0 ? 1.01 * rmin : cfg.cell;
+    return cfg;
+}
+
+}  // namespace gridcar
