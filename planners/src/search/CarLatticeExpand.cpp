@@ -4,6 +4,7 @@
 #include "gridcar/planners/search/CarLatticeSearch.h"
 
 #include "gridcar/core/Angles.h"
+#include "gridcar/planners/search/CarHeuristics.h"
 
 #include <atomic>
 #include <algorithm>
@@ -30,31 +31,22 @@ struct CarExpander
         const auto k = S.unpack(S.states_.key(s));
         return S.nodePose(k.i, k.j, k.h);
     }
+    CarHeuristic bounds;  ///< the lower bounds (search/CarHeuristics.h); all zero when not aiming
+
+    CarExpander(CarLatticeSearch &search, const LatticeCostModel &c) : S(search), cost(c)
+    {
+        bounds.euclidean = {S.query_.goal, cost.minCostPerMetre()};
+        bounds.obstacle = {S.ratio_, S.seedRadius_ * cost.minCostPerMetre()};
+        bounds.turn = {S.query_.goal, cost.minTurnCostPerRad()};
+        bounds.useObstacle = S.use2d_;
+        bounds.weight = S.query_.weight;
+    }
     double hNode(int i, int j) const
     {
         if (!S.query_.aim) return 0.0;
-        const Pose2 p = S.nodePose(i, j, 0);
-        const double e = std::hypot(S.query_.goal.x - p.x, S.query_.goal.y - p.y);
-        const double m = cost.minCostPerMetre();
-        if (!S.use2d_) return S.query_.weight * m * e;
-        const double d = S.h2d_->distance(i, j);
-        if (d == kInf) return kInf;
-        const double graph = d < 0 ? 0.0 : d / S.ratio_ - S.seedRadius_ * m;
-        return S.query_.weight * std::max(m * e, graph);
+        return bounds.position(S.nodePose(i, j, 0), S.use2d_ ? S.h2d_->distance(i, j) : -1.0);
     }
-    /// The turning a forward path from (node, heading) to the goal position needs at least:
-    /// somewhere its tangent is parallel to the chord (Rolle), so it turns by at least the
-    /// smaller of the angles between the heading and the chord's two directions.
-    double turnBound(int i, int j, int h) const
-    {
-        const double k = cost.minTurnCostPerRad();
-        if (k <= 0 || !S.query_.aim) return 0.0;
-        const Pose2 p = S.nodePose(i, j, h);
-        const double dx = S.query_.goal.x - p.x, dy = S.query_.goal.y - p.y;
-        if (dx * dx + dy * dy < 1e-12) return 0.0;
-        const double a = std::abs(wrapAngle(std::atan2(dy, dx) - p.yaw));
-        return S.query_.weight * k * std::min(a, M_PI - a);
-    }
+    double turnBound(int i, int j, int hd) const { return S.query_.aim ? bounds.turning(S.nodePose(i, j, hd)) : 0.0; }
     double heuristic(std::uint32_t s) const
     {
         const auto k = S.unpack(S.states_.key(s));
@@ -183,12 +175,12 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     SearchResult res;
     if (cost.customPriority())
     {
-        PriorityExpander ex{{*this, cost, 0, {}}};
+        PriorityExpander ex{CarExpander(*this, cost)};
         res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
     }
     else
     {
-        CarExpander ex{*this, cost, 0, {}};
+        CarExpander ex(*this, cost);
         res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
     }
     out.outcome = res.outcome;
@@ -207,7 +199,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
 double CarLatticeSearch::heuristicAt(int i, int j)
 {
     LengthCost len;
-    CarExpander ex{*this, len, 0, {}};
+    CarExpander ex(*this, len);
     return ex.hNode(i, j);
 }
 

@@ -1,0 +1,88 @@
+#pragma once
+/// @file CarHeuristics.h
+/// @brief The car lattice's lower bounds on the cost to go, as separate parts: the position
+/// bounds combined by max, the turn bound added (it bounds another term of the cost).
+
+#include "gridcar/core/Angles.h"
+#include "gridcar/core/Pose2.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gridcar
+{
+/// Straight-line distance to the goal position x the cost model's least cost per metre.
+/// Admissible for every cost model whose step cost is at least minCostPerMetre() x the step's
+/// length (LatticeCostModel's contract): no path to the goal is shorter than the chord.
+struct EuclideanBound
+{
+    Pose2 goal;
+    double perMetre{1.0};
+    double distance(const Pose2 &p) const { return std::hypot(goal.x - p.x, goal.y - p.y); }
+    double operator()(const Pose2 &p) const { return perMetre * distance(p); }
+};
+
+/// The 2D obstacle-aware distance (ObstacleHeuristic: Dijkstra over the lattice's vectors
+/// from the nodes round the goal, edges weighted by the cost model's nodeWeight()), divided by
+/// the largest ratio of that graph's open-space distance to a primitive's length and less the
+/// seed radius x the least cost per metre. Admissible when the collision model's tests are
+/// relaxations (CarCollision::relaxed(): a node the 2D graph drops is one no pose of the car
+/// can occupy): every path of primitives then maps to a 2D walk no longer than ratio x its
+/// length. With an application's checker (not a relaxation) it is an estimate: the path is
+/// near-optimal rather than bounded. Infinity where the 2D graph cannot reach the goal.
+struct ObstacleBound
+{
+    double ratio{1.0};
+    double seedCost{0.0};  ///< seed radius x least cost per metre
+    /// @p graphDistance: the 2D distance at the node (< 0: not computed, infinity: unreachable).
+    double operator()(double graphDistance) const
+    {
+        if (graphDistance == std::numeric_limits<double>::infinity()) return graphDistance;
+        return graphDistance < 0 ? 0.0 : graphDistance / ratio - seedCost;
+    }
+};
+
+/// The turning a path from a pose to the goal position needs at least x the cost model's least
+/// cost per radian of turning (minTurnCostPerRad(): corner A*'s weights; 0 for the others).
+/// Admissible for cost models that charge turning on top of length: somewhere the path's
+/// tangent is parallel to the chord (Rolle), so the body turns by at least the smaller of the
+/// angles between its heading and the chord's two directions, driving forwards or backwards.
+struct TurnBound
+{
+    Pose2 goal;
+    double perRad{0.0};
+    /// The least turn (rad) from @p p.
+    double angle(const Pose2 &p) const
+    {
+        const double dx = goal.x - p.x, dy = goal.y - p.y;
+        if (dx * dx + dy * dy < 1e-12) return 0.0;
+        const double a = std::abs(wrapAngle(std::atan2(dy, dx) - p.yaw));
+        return std::min(a, M_PI - a);
+    }
+    double operator()(const Pose2 &p) const { return perRad <= 0 ? 0.0 : perRad * angle(p); }
+};
+
+/// h = weight x max(Euclidean, obstacle) + weight x turn: the two position bounds bound the
+/// same term (length-like cost) and combine by max; the turn bound bounds the turning term and
+/// adds. @p weight >= 1 inflates it (a bounded-suboptimal search).
+struct CarHeuristic
+{
+    EuclideanBound euclidean;
+    ObstacleBound obstacle;
+    TurnBound turn;
+    bool useObstacle{true};
+    double weight{1.0};
+    /// The position part at node pose @p p with 2D distance @p graphDistance.
+    double position(const Pose2 &p, double graphDistance) const
+    {
+        if (!useObstacle) return weight * euclidean.perMetre * euclidean.distance(p);
+        const double e = euclidean(p);
+        const double g = obstacle(graphDistance);
+        if (g == std::numeric_limits<double>::infinity()) return g;
+        return weight * std::max(e, g);
+    }
+    double turning(const Pose2 &p) const { return turn.perRad <= 0 ? 0.0 : weight * turn.perRad * turn.angle(p); }
+};
+
+}  // namespace gridcar
