@@ -53,3 +53,24 @@ execute_process(COMMAND "${GRIDCAR}" vehicle --vehicle tank ERROR_VARIABLE err R
 if(NOT rc EQUAL 2)
   message(FATAL_ERROR "vehicle tank: expected exit 2, got ${rc}")
 endif()
+# --version: gridcar's version and the OMPL it is built on (numbers from OMPL's headers)
+execute_process(COMMAND "${GRIDCAR}" --version OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "^gridcar [0-9]+\\.[0-9]+\\.[0-9]+ \\(OMPL [0-9]+\\.[0-9]+\\.[0-9]+\\)")
+  message(FATAL_ERROR "--version: exit ${rc}, '${out}'")
+endif()
+# info --map embedded: the embedded campus, as --map's help says
+execute_process(COMMAND "${GRIDCAR}" info --map embedded --json OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "\"width\":4846")
+  message(FATAL_ERROR "info --map embedded: exit ${rc}, ${out} ${err}")
+endif()
+# a bare image whose ROS .yaml sits beside it: read as the image, with a warning naming the .yaml
+execute_process(COMMAND "${GRIDCAR}" info --map "${WORK}/m.pgm" --json OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0 OR NOT err MATCHES "warning: .*m\\.pgm is read as a plain image" OR NOT err MATCHES "--map [^ ]*m\\.yaml")
+  message(FATAL_ERROR "bare image beside its .yaml: exit ${rc}, no warning naming the .yaml: ${err}")
+endif()
+# a planner name with a typo: exit 2 and a suggestion
+execute_process(COMMAND "${GRIDCAR}" plan --map "${WORK}/m.yaml" --planner dijkstar --start 10,10 --goal 20,20
+  ERROR_VARIABLE err RESULT_VARIABLE rc)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "did you mean 'dijkstra'")
+  message(FATAL_ERROR "planner typo: exit ${rc}, ${err}")
+endif()

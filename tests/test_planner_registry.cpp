@@ -136,3 +136,31 @@ TEST(PlannerRegistry, AWeightActsTheSameSetBeforeOrAfterSetup)
         (void)lPhysics;
     }
 }
+
+// OMPL's own class names find OMPL's planners (case-insensitive); a typo gets a suggestion,
+// another word none.
+TEST(PlannerRegistry, OmplClassNamesAndSuggestions)
+{
+    for (const char *n : {"RRTConnect", "RRTstar", "PRMstar", "LazyPRMstar", "BITstar", "InformedRRTstar", "RRT", "PRM"})
+    {
+        const PlannerEntry *e = findPlanner(n);
+        ASSERT_NE(e, nullptr) << n;
+        EXPECT_FALSE(e->ours) << n;
+    }
+    EXPECT_NE(findPlanner("Corner-AStar"), nullptr);
+    EXPECT_EQ(suggestPlanner("dijkstar"), "dijkstra");
+    EXPECT_EQ(suggestPlanner("improved-a-star"), "improved-astar");
+    EXPECT_EQ(suggestPlanner("rrtconect"), "rrtconnect");
+    EXPECT_EQ(suggestPlanner("potential-field"), "");
+    GridSetup s = test::testSetup();
+    EXPECT_EQ(makePlanner(s.ss->getSpaceInformation(), "RRTConnect")->getName(), "RRTConnect");
+    try
+    {
+        makePlanner(s.ss->getSpaceInformation(), "dijkstar");
+        FAIL() << "a typo was accepted";
+    }
+    catch (const std::invalid_argument &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("did you mean 'dijkstra'"), std::string::npos) << e.what();
+    }
+}

@@ -35,6 +35,10 @@ Command addPaperCCommand(CLI::App &app);
 // ------------------------------------------------------------------ shared option groups
 /// `--map FILE` (required) in any of the formats the readers take.
 void addMapOption(CLI::App *cmd, std::string &map);
+/// The map of a --map argument: 'embedded' (when no file has that name) is the embedded campus;
+/// a plain image whose ROS .yaml sits beside it is read as the image, with a warning naming the
+/// .yaml (the image alone has no resolution, origin or thresholds).
+OccupancyGrid loadMapArgument(const std::string &map);
 /// `--vehicle NAME|FILE` (default paper-i).
 void addVehicleOption(CLI::App *cmd, std::string &vehicle);
 /// `--time-limit S`.

@@ -30,7 +30,7 @@ OccupancyGrid loadOrGenerate(const std::string &map, std::string &label)
         return generateCampus();
     }
     label = map;
-    return loadMap(map);
+    return loadMapArgument(map);
 }
 
 struct InfoOptions
@@ -80,7 +80,7 @@ constexpr std::size_t kInfoFieldCells = std::size_t(1) << 26;
 
 int runInfo(const InfoOptions &o)
 {
-    OccupancyGrid grid = loadMap(o.map);
+    OccupancyGrid grid = loadMapArgument(o.map);
     const OccupancyGrid::Counts counts = grid.counts();
     grid.setUnknownIsFree(o.unknownFree);
     std::unique_ptr<DistanceField> field;

@@ -7,6 +7,7 @@
 #include "gridcar/bench/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +18,28 @@ namespace gridcar::cli
 void addMapOption(CLI::App *cmd, std::string &map)
 {
     cmd->add_option("--map", map, "Map file (.yaml, .map, .ppm, .pgm, .png), or 'embedded' for the embedded campus")->required();
+}
+
+OccupancyGrid loadMapArgument(const std::string &map)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (map == "embedded" && !fs::exists(map, ec)) return generateCampus();
+    const fs::path path(map);
+    std::string ext = path.extension().string();
+    for (char &c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".pgm" || ext == ".png" || ext == ".ppm" || ext == ".pnm")
+        for (const char *y : {".yaml", ".yml"})
+        {
+            fs::path yaml = path;
+            yaml.replace_extension(y);
+            if (fs::exists(yaml, ec))
+                std::fprintf(stderr,
+                             "gridcar: warning: %s is read as a plain image (1 m/cell, origin 0, dark = occupied); its ROS "
+                             "map file %s sits beside it: pass --map %s for its resolution, origin and thresholds\n",
+                             map.c_str(), yaml.string().c_str(), yaml.string().c_str());
+        }
+    return loadMap(map);
 }
 
 void addVehicleOption(CLI::App *cmd, std::string &vehicle)
@@ -62,9 +85,7 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
 {
     bench::checkTimeLimit(q.timeLimit);
     Query query;
-    std::error_code ec;
-    query.grid = std::make_shared<OccupancyGrid>(q.map == "embedded" && !std::filesystem::exists(q.map, ec) ? generateCampus()
-                                                                                                         : loadMap(q.map));
+    query.grid = std::make_shared<OccupancyGrid>(loadMapArgument(q.map));
     query.grid->setUnknownIsFree(q.unknownFree);
     query.vehicle = VehicleParams::fromNameOrFile(q.vehicle);
     if (withPoses)  // before the set-up: a malformed pose fails at once

@@ -2,15 +2,27 @@
 // that plan or drive use 3 for "ran, but no exact solution / did not reach the goal".
 #include "Cli.h"
 
+#include "gridcar/version.h"
+
+#include <ompl/config.h>
 #include <ompl/util/Exception.h>
 
 #include <cstdio>
 #include <exception>
 #include <new>
 #include <stdexcept>
+#include <string>
 
 namespace
 {
+/// "gridcar 0.1.0 (OMPL 1.5.2)": OMPL's version from its headers' numbers (Debian's OMPL 1.5.2
+/// sets OMPL_VERSION to "").
+std::string versionText()
+{
+    return std::string("gridcar ") + GRIDCAR_VERSION + " (OMPL " + std::to_string(OMPL_MAJOR_VERSION) + "." +
+           std::to_string(OMPL_MINOR_VERSION) + "." + std::to_string(OMPL_PATCH_VERSION) + ")";
+}
+
 /// Runs @p run and turns every error into one stderr line and an exit status.
 int guarded(const std::function<int()> &run)
 {
@@ -55,6 +67,7 @@ int main(int argc, char **argv)
                  "and a benchmark harness against OMPL's sampling planners.\n"
                  "Maps: ROS map_server .yaml (+ PGM/PNG), Moving AI .map, plain .ppm/.pgm/.png (dark = occupied)."};
     app.require_subcommand(1);
+    app.set_version_flag("--version", versionText(), "Print gridcar's version and the OMPL it is built on, and exit");
     const std::vector<Command> commands = {addInfoCommand(app),    addGenmapCommand(app), addDemoCommand(app),
                                            addVehicleCommand(app), addPlanCommand(app),   addScenCommand(app),
                                            addDriveCommand(app),   addBenchCommand(app),  addPaperICommand(app),
@@ -68,6 +81,10 @@ int main(int argc, char **argv)
         return app.exit(e);
     }
     catch (const CLI::CallForAllHelp &e)
+    {
+        return app.exit(e);
+    }
+    catch (const CLI::CallForVersion &e)
     {
         return app.exit(e);
     }

@@ -70,7 +70,11 @@ BenchWorld loadWorld(const Problem &p)
     }
     // every planner name must be known before anything runs
     for (const PlannerSpec &s : p.planners)
-        if (!isPlannerName(s.name)) bad(p, "unknown planner '" + s.name + "'");
+        if (!isPlannerName(s.name))
+        {
+            const std::string guess = suggestPlanner(s.name);
+            bad(p, "unknown planner '" + s.name + "'" + (guess.empty() ? std::string() : "; did you mean '" + guess + "'?"));
+        }
     std::fprintf(stderr, "[bench] %s: distance field and footprint checker for %d x %d cells...\n", p.name.c_str(),
                  w.grid->width(), w.grid->height());
     SetupOptions so;

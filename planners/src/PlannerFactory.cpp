@@ -1,3 +1,4 @@
+#include <cctype>
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/core/Errors.h"
 
@@ -89,11 +90,59 @@ const std::vector<PlannerEntry> &plannerRegistry()
     return registry;
 }
 
+namespace
+{
+std::string lowered(std::string s)
+{
+    for (char &c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+/// Levenshtein distance (the names are short).
+std::size_t editDistance(const std::string &a, const std::string &b)
+{
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+        {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+}  // namespace
+
 const PlannerEntry *findPlanner(const std::string &name)
 {
+    // case-insensitive: OMPL's own class names (RRTConnect, BITstar, LazyPRMstar, ...) are ours
+    // in lower case
+    const std::string key = lowered(name);
     for (const PlannerEntry &e : plannerRegistry())
-        if (e.name == name) return &e;
+        if (e.name == key) return &e;
     return nullptr;
+}
+
+std::string suggestPlanner(const std::string &name)
+{
+    const std::string key = lowered(name);
+    std::string best;
+    std::size_t bestD = std::max<std::size_t>(3, key.size() / 3) + 1;  // a typo, not another word
+    for (const PlannerEntry &e : plannerRegistry())
+    {
+        const std::size_t d = editDistance(key, e.name);
+        if (d < bestD)
+        {
+            bestD = d;
+            best = e.name;
+        }
+    }
+    return best;
 }
 
 namespace
@@ -131,7 +180,9 @@ ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, co
     if (const PlannerEntry *e = findPlanner(name)) return e->make(si);
     std::string known;
     for (const auto &n : plannerNames()) known += (known.empty() ? "" : ", ") + n;
-    throw std::invalid_argument("unknown planner '" + printable(name) + "' (known: " + known +
+    const std::string guess = suggestPlanner(name);
+    throw std::invalid_argument("unknown planner '" + printable(name) + "'" +
+                                (guess.empty() ? std::string() : "; did you mean '" + guess + "'?") + " (known: " + known +
                                 "; any of them + \"+smooth\" adds paper I's post-processing, + \"+simplify\" OMPL's path simplifier)");
 }
 

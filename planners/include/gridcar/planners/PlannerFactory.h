@@ -24,8 +24,13 @@ struct PlannerEntry
 /// corner-astar-grid and improved-astar-grid) and OMPL's. A new planner is one entry here.
 const std::vector<PlannerEntry> &plannerRegistry();
 
-/// The registry's entry of @p name (no suffix), or null.
+/// The registry's entry of @p name (no suffix), or null. Case-insensitive: OMPL's class names
+/// (RRTConnect, RRTstar, PRMstar, LazyPRMstar, BITstar, InformedRRTstar) find OMPL's planners.
 const PlannerEntry *findPlanner(const std::string &name);
+
+/// The registry name nearest to @p name by edit distance when it is close enough to be a
+/// typo (for "did you mean"), else "".
+std::string suggestPlanner(const std::string &name);
 
 /// dijkstra, astar-manhattan, astar-euclidean, astar-octile, corner-astar, improved-astar,
 /// corner-astar-grid, improved-astar-grid.
