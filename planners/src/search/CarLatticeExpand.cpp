@@ -143,6 +143,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         });
     }
     h2d_->setCancel(cancelled);
+    cancelled_ = &cancelled;
     std::vector<double> yaws;
     for (int h = 0; h < H; ++h) yaws.push_back(phi_ + lattice_->yaw(h));
     col_->setHeadings(yaws);
@@ -183,6 +184,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         CarExpander ex(*this, cost);
         res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
     }
+    cancelled_ = nullptr;
     out.outcome = res.outcome;
     out.expanded = res.expanded;
     out.states = states_.size();

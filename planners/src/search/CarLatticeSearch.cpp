@@ -112,6 +112,22 @@ bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<P
     return col_->curveFree(from, n, poseAt, lattice_->margin());
 }
 
+bool CarLatticeSearch::shotFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
+{
+    // blocks of 64 poses (a multiple of FootprintCollision's blocks of 4, so the same poses are
+    // checked the same way), the run's termination condition polled between them
+    constexpr int kBlock = 64;
+    Pose2 blockStart = from;
+    for (int b = 0; b < n; b += kBlock)
+    {
+        if (b > 0 && cancelled_ && (*cancelled_)()) return false;
+        const int m = std::min(kBlock, n - b);
+        if (!col_->curveFree(blockStart, m, [&](int i) { return poseAt(b + i); }, lattice_->margin())) return false;
+        blockStart = poseAt(b + m);
+    }
+    return true;
+}
+
 bool CarLatticeSearch::motionFree(const Pose2 &from, const std::vector<Pose2> &poses) const
 {
     return curveFree(from, int(poses.size()), [&poses](int i) { return poses[std::size_t(i - 1)]; });
@@ -210,7 +226,8 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
             p.yaw = wrapYaw(p.yaw);
             return p;
         };
-        const bool free = curveFree(from, n, poseAt);
+        if (cancelled_ && (*cancelled_)()) return false;  // the loop then stops at its next poll
+        const bool free = shotFree(from, n, poseAt);
         if (!free) continue;
         double turn = 0;
         for (int seg = 0; seg < path.count; ++seg)

@@ -131,6 +131,10 @@ public:
     bool motionFree(const Pose2 &from, const std::vector<Pose2> &poses) const;
     /// The same for poses 1..n given by @p poseAt (computed only where needed).
     bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const;
+    /// curveFree() for the analytic expansion's long curves: polls the run's termination
+    /// condition every 64 poses (a thousand poses on a slow application checker take tens of
+    /// ms) and answers false when it fired.
+    bool shotFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const;
 
 private:
     friend struct CarExpander;
@@ -166,6 +170,7 @@ private:
     std::vector<Pose2> shot_;
     double shotCost_{0};
     int shotsTried_{0};
+    const std::function<bool()> *cancelled_{nullptr};  ///< the running query's (run())
 };
 
 }  // namespace gridcar
