@@ -1,5 +1,7 @@
 #include "gridcar/bench/PlanQuery.h"
 
+#include "gridcar/path/Cusps.h"
+
 #include "gridcar/core/Errors.h"
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"
@@ -117,7 +119,9 @@ QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, co
     if (setup.ss->haveSolutionPath()) q.path = solutionPoses(setup, *planner);
     q.rawPath = q.path;
     q.expanded = std::uint64_t(progressValue(*planner, "expanded nodes INTEGER"));
-    q.metrics = computePathMetrics(q.path, setup.checker.get(), TurnParams(), setup.reversing());
+    // a path may reverse on a Reeds-Shepp space, or on any space where the car lattice reverses
+    const bool reversing = setup.reversing() || drivesBackwards(q.path);
+    q.metrics = computePathMetrics(q.path, setup.checker.get(), TurnParams(), reversing);
     q.maxTurnDeg = q.metrics.maxTurnDeg;
     const auto *report = dynamic_cast<const SmoothingReport *>(planner.get());
     if (report && !report->lastSmoothing().path.empty())
@@ -140,7 +144,7 @@ QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, co
     if (report && !report->lastSmoothing().notDrivable.empty())
         q.notExactBecause = "the smoothed path is not drivable: " + report->lastSmoothing().notDrivable;
     DrivabilityOptions drive;
-    drive.reversing = setup.reversing();
+    drive.reversing = reversing;
     if (!q.path.empty()) q.drivability = checkDrivable(q.path, *setup.checker, drive);
     return q;
 }

@@ -18,13 +18,16 @@ void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision>
 }
 
 FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
-                           bool freeStartHeading, double weight, const GoalTarget &goal, const LatticeCostModel &cost,
+                           bool freeStartHeading, const CarSearchOptions &options, const GoalTarget &goal,
+                           const LatticeCostModel &cost,
                            const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
 {
     CarLatticeQuery q;
     q.start = toPose(start);
     q.freeStartHeading = freeStartHeading;
-    q.weight = weight;
+    q.weight = options.weight;
+    q.reversePenalty = options.reversePenalty;
+    q.cuspPenalty = options.cuspPenalty;
     q.goal = goal.pose;
     switch (goal.kind)
     {

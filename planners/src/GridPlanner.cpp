@@ -7,6 +7,7 @@
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/PlannerData.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/util/Console.h>
 
 #include <algorithm>
@@ -78,6 +79,9 @@ void GridPlanner::setup()
     tooBig_.clear();
     if (usesCarLattice())
     {
+        if (params_.reverse == "on" && dynamic_cast<const ompl::base::DubinsStateSpace *>(si_->getStateSpace().get()))
+            throw std::invalid_argument(getName() + ": reverse=on on a Dubins space, which drives forwards only (use "
+                                                    "reverse=auto or the Reeds-Shepp space)");
         car_.setup(carLatticeConfig(), collision_);
         return;  // no per-cell move cache or dense search arrays on the car lattice
     }
@@ -132,8 +136,8 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     if (car)
     {
         const std::unique_ptr<LatticeCostModel> cost = carCost();
-        run = car_.solve(si_, start, params_.freeStartHeading, params_.heuristicWeight, goal_, *cost, cancelled,
-                         support_.progress());
+        const CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty, cuspPenalty()};
+        run = car_.solve(si_, start, params_.freeStartHeading, options, goal_, *cost, cancelled, support_.progress());
     }
     else
         run = grid_.solve(si_, start, params_.freeStartHeading, goal_, cancelled, support_.progress());

@@ -3,6 +3,11 @@
 /// lattice's primitive set from them.
 #include "gridcar/planners/GridPlanner.h"
 
+#include "gridcar/core/Errors.h"
+#include "gridcar/vehicle/Dynamics.h"
+
+#include <ompl/base/spaces/DubinsStateSpace.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -14,6 +19,47 @@ void GridPlanner::declareCarLatticeParams()
     declareParam<int>("headings", this, &GridPlanner::setLatticeHeadings, &GridPlanner::latticeHeadings, "8,16");
     declareParam<double>("heuristic_weight", this, &GridPlanner::setHeuristicWeight, &GridPlanner::heuristicWeight,
                          "1.:0.05:3.");
+    declareParam<std::string>("reverse", this, &GridPlanner::setReverse, &GridPlanner::reverse, "off,on,auto");
+    declareParam<double>("reverse_penalty", this, &GridPlanner::setReversePenalty, &GridPlanner::reversePenalty,
+                         "1.:0.5:10.");
+    declareParam<double>("cusp_penalty", this, &GridPlanner::setCuspPenalty, &GridPlanner::cuspPenalty, "0.:1.:100.");
+}
+
+void GridPlanner::setReverse(const std::string &r)
+{
+    if (r != "off" && r != "on" && r != "auto")
+        throw std::invalid_argument(getName() + ": reverse must be off, on or auto, got '" + printable(r) + "'");
+    params_.reverse = r;
+    parameterSet("reverse");
+}
+
+void GridPlanner::setReversePenalty(double f)
+{
+    if (!std::isfinite(f) || f < 1.0 || f > 1000.0)
+        throw std::invalid_argument(getName() + ": reverse_penalty must be a factor in [1, 1000]");
+    params_.reversePenalty = f;
+    parameterSet("reverse_penalty");
+}
+
+void GridPlanner::setCuspPenalty(double m)
+{
+    if (!std::isfinite(m) || m < 0.0 || m > 1e4)
+        throw std::invalid_argument(getName() + ": cusp_penalty must be a length in [0, 10000] m");
+    params_.cuspPenalty = m;
+    parameterSet("cusp_penalty");
+}
+
+bool GridPlanner::reversing() const
+{
+    if (params_.reverse == "off") return false;
+    const bool dubins = dynamic_cast<const ompl::base::DubinsStateSpace *>(si_->getStateSpace().get()) != nullptr;
+    return !(dubins && params_.reverse == "auto");
+}
+
+double GridPlanner::cuspPenalty() const
+{
+    if (setParams_.count("cusp_penalty")) return params_.cuspPenalty;
+    return gearChangeDistance(vehicle());
 }
 
 void GridPlanner::setAllowCornerCutting(bool v)
@@ -100,6 +146,7 @@ CarLatticeConfig GridPlanner::carLatticeConfig() const
     }
     // arcs 1 % wider than R_min: sampled curves then stay within K_max by a clear margin
     cfg.turnRadius = rmin > 0 ? 1.01 * rmin : cfg.cell;
+    cfg.reverse = reversing();
     return cfg;
 }
 

@@ -29,4 +29,11 @@ std::vector<PathPiece> splitAtCusps(const std::vector<Pose2> &path)
     return out;
 }
 
+bool drivesBackwards(const std::vector<Pose2> &path)
+{
+    for (const PathPiece &p : splitAtCusps(path))
+        if (p.backward) return true;
+    return false;
+}
+
 }  // namespace gridcar

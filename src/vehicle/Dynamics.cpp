@@ -18,6 +18,19 @@ double cornerDistanceLost(const VehicleParams &v, double vc)
     return 0.5 * (V - vc) * (V - vc) * (1.0 / v.acceleration + 1.0 / v.deceleration);
 }
 
+double manoeuvringSpeed(const VehicleParams &v)
+{
+    const double r = v.minTurningRadius();
+    if (!(r > 0) || !std::isfinite(r)) return v.maxSpeed;
+    return std::min(v.maxSpeed, std::sqrt(lateralAccelLimit(v) * r));
+}
+
+double gearChangeDistance(const VehicleParams &v)
+{
+    const double vm = manoeuvringSpeed(v);
+    return 0.5 * vm * vm * (1.0 / v.acceleration + 1.0 / v.deceleration);
+}
+
 double cornerTimeLost(const VehicleParams &v, double theta)
 {
     theta = std::abs(theta);

@@ -24,4 +24,8 @@ struct PathPiece
  */
 std::vector<PathPiece> splitAtCusps(const std::vector<Pose2> &path);
 
+/// True if some piece of @p path is driven backwards (splitAtCusps()): a Reeds-Shepp path, or
+/// a car-lattice path with reverse motion, on whatever space it was planned.
+bool drivesBackwards(const std::vector<Pose2> &path);
+
 }  // namespace gridcar

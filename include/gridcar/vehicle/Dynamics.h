@@ -31,6 +31,15 @@ CornerSpeeds cornerSpeeds(const VehicleParams &v);
 /// x the time lost braking to it and accelerating again, (v_max - v_c)^2 / 2 x (1/a + 1/d).
 double cornerDistanceLost(const VehicleParams &v, double cornerSpeed);
 
+/// The manoeuvring speed (m/s): the speed limit on an arc of R_min,
+/// min(v_max, sqrt(lateralAccelLimit() R_min)), where a car reverses and changes gear.
+double manoeuvringSpeed(const VehicleParams &v);
+
+/// Distance (m) a gear change costs: the manoeuvring speed v_m x the time lost stopping from it
+/// and starting again, v_m^2 / 2 x (1/a + 1/d) (cornerDistanceLost() at v_m down to 0). The
+/// default cusp penalty of the car lattice.
+double gearChangeDistance(const VehicleParams &v);
+
 /// Seconds lost for a heading change of @p thetaRad (0 for none): cornerDistanceLost() / v_max
 /// at the speed limit of a turn of R_min opened up by 1 / tan(theta / 2).
 double cornerTimeLost(const VehicleParams &v, double thetaRad);

@@ -76,9 +76,13 @@ struct CarExpander
             if (hn == kInf) continue;
             hn += turnBound(ni, nj, prim.to);
             const std::uint32_t id = S.intern(ni, nj, prim.to);
-            const double c = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
-            emit(id, c, [this, id, p, hn] {
+            double c = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+            const std::int8_t gear = prim.reverse ? -1 : 1;
+            if (prim.reverse) c *= S.query_.reversePenalty;
+            if (S.gear_[s] != 0 && S.gear_[s] != gear) c += S.query_.cuspPenalty;  // a gear change
+            emit(id, c, [this, id, p, hn, gear] {
                 S.prim_[id] = std::int16_t(p);
+                S.gear_[id] = gear;
                 return hn;
             });
         }
@@ -166,6 +170,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     if (use2d_ && h2d_->distance(0, 0) == kInf) use2d_ = false;
     states_.clear();
     prim_.clear();
+    gear_.clear();
     shotFrom_ = SearchSpace::kNoParent;
     shot_.clear();
     shotCost_ = 0;

@@ -86,7 +86,11 @@ std::uint32_t CarLatticeSearch::intern(int i, int j, int h)
 {
     const std::uint64_t k = pack(i, j, h);
     const std::uint32_t id = states_.intern(k);
-    if (id == prim_.size()) prim_.push_back(-1);  // a new state
+    if (id == prim_.size())  // a new state
+    {
+        prim_.push_back(-1);
+        gear_.push_back(0);
+    }
     return id;
 }
 
@@ -229,17 +233,30 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         if (cancelled_ && (*cancelled_)()) return false;  // the loop then stops at its next poll
         const bool free = shotFree(from, n, poseAt);
         if (!free) continue;
-        double turn = 0;
+        double turn = 0, forward = 0, backward = 0;
         for (int seg = 0; seg < path.count; ++seg)
-            if (path.segments[std::size_t(seg)].steer != Steer::Straight)
-                turn += std::abs(path.segments[std::size_t(seg)].length) / R;
+        {
+            const CurveSegment &sg = path.segments[std::size_t(seg)];
+            if (sg.steer != Steer::Straight) turn += std::abs(sg.length) / R;
+            (sg.length < 0 ? backward : forward) += std::abs(sg.length);
+        }
+        // gear changes: the curve's cusps, and one before it when it sets off in the other gear
+        int gearChanges = path.cusps();
+        for (int seg = 0; seg < path.count; ++seg)
+            if (path.segments[std::size_t(seg)].length != 0)
+            {
+                const int first = path.segments[std::size_t(seg)].length < 0 ? -1 : 1;
+                if (gear_[s] != 0 && gear_[s] != first) ++gearChanges;
+                break;
+            }
         std::vector<Pose2> poses;
         poses.reserve(std::size_t(n));
         for (int i = 1; i <= n; ++i) poses.push_back(poseAt(i));
         poses.back() = {g.x, g.y, y};
         shot_ = std::move(poses);
         shotFrom_ = s;
-        shotCost_ = cost.stepCost(from, shot_, len, turn);
+        shotCost_ = cost.stepCost(from, shot_, forward + query_.reversePenalty * backward, turn) +
+                    gearChanges * query_.cuspPenalty;
         return true;
     }
     return false;

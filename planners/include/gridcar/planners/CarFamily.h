@@ -16,6 +16,14 @@
 
 namespace gridcar
 {
+/// What a query on the car lattice weighs, besides the cost model (CarLatticeQuery's fields).
+struct CarSearchOptions
+{
+    double weight{1.0};          ///< heuristic weight, >= 1
+    double reversePenalty{1.0};  ///< factor on reversed cost, >= 1
+    double cuspPenalty{0.0};     ///< cost of a gear change
+};
+
 /**
  * @brief The car lattice as a search family: set up from a plain CarLatticeConfig (the
  * primitive set: cell, headings, turning radius, sample spacing) over the collision model;
@@ -32,10 +40,10 @@ public:
     /// The search in use (null before setup()).
     const CarLatticeSearch *search() const { return search_.get(); }
 
-    /// One query: start pose (any lattice heading when @p freeStartHeading), heuristic weight
-    /// @p weight, the goal, the cost model.
+    /// One query: start pose (any lattice heading when @p freeStartHeading), the options, the
+    /// goal, the cost model.
     FamilyRun solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start, bool freeStartHeading,
-                    double weight, const GoalTarget &goal, const LatticeCostModel &cost,
+                    const CarSearchOptions &options, const GoalTarget &goal, const LatticeCostModel &cost,
                     const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress);
     /// The explored graph of the last search.
     void plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const;

@@ -33,6 +33,9 @@ struct GridPlannerParams
     double latticeCell{0.0};         ///< `lattice_cell`, m; 0 = automatic
     int headings{16};                ///< `headings` (car lattice): 8 or 16
     double heuristicWeight{1.1};     ///< `heuristic_weight` (car lattice), >= 1
+    std::string reverse{"off"};      ///< `reverse` (car lattice): off, on, auto (on but on a Dubins space)
+    double reversePenalty{2.0};      ///< `reverse_penalty` (car lattice): factor on reversed cost, >= 1
+    double cuspPenalty{0.0};         ///< `cusp_penalty` (car lattice), m; used when set, else from the vehicle
 };
 
 /**
@@ -121,6 +124,22 @@ public:
     /// Heuristic weight on the car lattice (`heuristic_weight`, >= 1; see CarLatticeQuery).
     double heuristicWeight() const { return params_.heuristicWeight; }
     void setHeuristicWeight(double w);
+    /// Reverse motion on the car lattice (`reverse`): `off` (default), `on` (refused by setup()
+    /// on a Dubins space, which is forward-only), `auto` (on except on a Dubins space).
+    std::string reverse() const { return params_.reverse; }
+    void setReverse(const std::string &r);
+    /// True if the car lattice drives backwards as configured (after setup()).
+    bool reversing() const;
+    /// Factor on the cost of motion driven backwards (`reverse_penalty`, >= 1; default 2, as
+    /// Nav2's Smac planners).
+    double reversePenalty() const { return params_.reversePenalty; }
+    void setReversePenalty(double f);
+    /// Cost of a gear change (`cusp_penalty`, m of length-equivalent cost): as set, else from
+    /// the vehicle: the distance its stop and start at a manoeuvring speed cost (see
+    /// gearChangeDistance()).
+    double cuspPenalty() const;
+    void setCuspPenalty(double m);
+
     /// True if the planner, as configured, searches the car lattice.
     virtual bool usesCarLattice() const { return false; }
     /// The car lattice in use after setup() (null on the grid lattice).
@@ -154,7 +173,10 @@ protected:
     /// setup() refuses them, set explicitly, on a planner configured for the car lattice.
     virtual std::vector<std::string> gridLatticeOnlyParams() const { return {"allow_corner_cutting"}; }
     /// Parameters that act only on the car lattice: setup() refuses them on the grid lattice.
-    virtual std::vector<std::string> carLatticeOnlyParams() const { return {"headings", "heuristic_weight"}; }
+    virtual std::vector<std::string> carLatticeOnlyParams() const
+    {
+        return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty"};
+    }
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).
     void markNotExact(const std::string &why) { notExactBecause_ = why; }

@@ -67,6 +67,12 @@ struct CarLatticeQuery
     /// Heuristic weight w >= 1 (weighted A*): the path found costs at most w x the lattice
     /// optimum when the heuristic is a lower bound; larger w, fewer expansions.
     double weight{1.0};
+    /// Factor (>= 1) on the cost of a primitive driven backwards (the primitive set's reverse
+    /// ones, the reversed segments of the analytic expansion).
+    double reversePenalty{1.0};
+    /// Cost (>= 0, the cost model's unit) of a gear change: between a state reached forwards
+    /// and a motion backwards, or the other way, and at every cusp of the analytic expansion.
+    double cuspPenalty{0.0};
 };
 
 /// What a search on the car lattice found.
@@ -165,6 +171,7 @@ private:
     double seedRadius_{0};
     StateInterner states_;  ///< lattice node key -> dense state id
     std::vector<std::int16_t> prim_;  ///< primitive that reached each state (-1: a start state)
+    std::vector<std::int8_t> gear_;   ///< how each state was reached: 1 forwards, -1 backwards, 0 a start
     GrowingSearchSpace space_;
     std::uint32_t shotFrom_{SearchSpace::kNoParent};
     std::vector<Pose2> shot_;

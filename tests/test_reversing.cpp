@@ -1,0 +1,135 @@
+// Reverse motion on the car lattice: the planners' `reverse`, `reverse_penalty` and
+// `cusp_penalty`, forward-only on a Dubins space, paths that back out drivably.
+#include "PlannerTestUtil.h"
+
+#include "gridcar/path/Drivability.h"
+#include "gridcar/core/Angles.h"
+#include "gridcar/planners/CornerAStar.h"
+#include "gridcar/planners/GridPlanner.h"
+#include "gridcar/spaces/OmplAdapters.h"
+#include "gridcar/vehicle/Dynamics.h"
+
+#include <ompl/util/Console.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace gridcar;
+namespace ob = ompl::base;
+
+namespace
+{
+/// 30 m x 12 m at 0.1 m: an open square (x < 8 m), then a street 2.6 m wide (y 4.7-7.3 m),
+/// closed at x = 25 m: too narrow for paper I's car to turn in.
+std::shared_ptr<OccupancyGrid> deadEnd()
+{
+    auto g = std::make_shared<OccupancyGrid>(300, 120, 0.1, CellState::Free);
+    for (int r = 0; r < g->height(); ++r)
+        for (int c = 0; c < g->width(); ++c)
+        {
+            const double x = g->cellCenterX(c), y = g->cellCenterY(r);
+            if (x >= 8.0 && (y < 4.7 || y > 7.3 || x >= 25.0)) g->set(c, r, CellState::Occupied);
+        }
+    return g;
+}
+
+int backwardPoses(const std::vector<Pose2> &path)
+{
+    int n = 0;
+    for (std::size_t i = 1; i < path.size(); ++i)
+    {
+        const double dx = path[i].x - path[i - 1].x, dy = path[i].y - path[i - 1].y;
+        if (dx * std::cos(path[i].yaw) + dy * std::sin(path[i].yaw) < -1e-9) ++n;
+    }
+    return n;
+}
+
+/// Plans in the dead end from facing its closed end to the square behind, heading kept.
+ob::PlannerStatus planOut(const std::string &planner, const std::string &reverse, SpaceKind kind,
+                          std::vector<Pose2> &path, GridSetup &s)
+{
+    SetupOptions o;
+    o.space = kind;
+    s = makeGridSetup(deadEnd(), VehicleParams::preset("paper-i"), o);
+    auto p = makePlanner(s.ss->getSpaceInformation(), planner);
+    p->params().setParam("match_goal_heading", "1");
+    p->params().setParam("reverse", reverse);
+    s.ss->setPlanner(p);
+    s.setStartAndGoal({18.0, 6.0, 0.0}, {4.0, 6.0, 0.0});
+    const ob::PlannerStatus st = s.ss->solve(5.0);
+    path = s.ss->haveSolutionPath() ? toPoses(s.ss->getSolutionPath()) : std::vector<Pose2>();
+    return st;
+}
+}  // namespace
+
+// Forwards the car cannot leave the street with its heading; with reverse=on both car-lattice
+// planners back out, exactly to the goal pose, drivable with the body turned round.
+TEST(Reversing, BothPlannersBackOutOfADeadEnd)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    for (const char *name : {"corner-astar", "improved-astar"})
+    {
+        SCOPED_TRACE(name);
+        GridSetup s;
+        std::vector<Pose2> path;
+        EXPECT_NE(planOut(name, "off", SpaceKind::SE2, path, s), ob::PlannerStatus::EXACT_SOLUTION);
+        ASSERT_EQ(planOut(name, "on", SpaceKind::SE2, path, s), ob::PlannerStatus::EXACT_SOLUTION);
+        EXPECT_GT(backwardPoses(path), 0);
+        DrivabilityOptions d;
+        d.reversing = true;
+        const Drivability dv = checkDrivable(path, *s.checker, d);
+        EXPECT_TRUE(dv.drivable) << dv.reason;
+        EXPECT_NEAR(path.back().x, 4.0, 1e-6);
+        EXPECT_NEAR(path.back().y, 6.0, 1e-6);
+        EXPECT_NEAR(wrapAngle(path.back().yaw), 0.0, 1e-6);
+    }
+}
+
+// A Dubins space drives forwards only: reverse=on is refused with the reason, reverse=auto
+// stays forwards; on the Reeds-Shepp space auto reverses.
+TEST(Reversing, ForwardOnlyOnTheDubinsSpace)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    GridSetup s;
+    std::vector<Pose2> path;
+    try
+    {
+        planOut("corner-astar", "on", SpaceKind::Dubins, path, s);
+        FAIL() << "reverse=on accepted on a Dubins space";
+    }
+    catch (const std::invalid_argument &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("forwards only"), std::string::npos) << e.what();
+    }
+    planOut("corner-astar", "auto", SpaceKind::Dubins, path, s);
+    EXPECT_EQ(backwardPoses(path), 0);
+    ASSERT_EQ(planOut("corner-astar", "auto", SpaceKind::ReedsShepp, path, s), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_GT(backwardPoses(path), 0);
+}
+
+// The penalties: cusp_penalty defaults to the vehicle's gear-change distance; where a forward
+// path exists, a high reverse_penalty keeps the path forwards; both refused on the grid lattice.
+TEST(Reversing, PenaltiesAndWhereTheyAct)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    GridSetup s = test::carSetup(SpaceKind::SE2);
+    auto p = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
+    p->setup();  // the vehicle is the checker's from set-up on
+    EXPECT_DOUBLE_EQ(p->cuspPenalty(), gearChangeDistance(VehicleParams::preset("paper-i")));
+    EXPECT_GT(p->cuspPenalty(), 0.5);
+    p->setCuspPenalty(3.0);
+    EXPECT_DOUBLE_EQ(p->cuspPenalty(), 3.0);
+    EXPECT_THROW(p->setReversePenalty(0.5), std::invalid_argument);
+    EXPECT_THROW(p->setReverse("sometimes"), std::invalid_argument);
+    p->setReverse("on");
+    p->setReversePenalty(10.0);
+    s.ss->setPlanner(p);
+    test::setPlainQuery(*s.ss, 10, 30, 50, 30);
+    ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(backwardPoses(toPoses(s.ss->getSolutionPath())), 0);
+
+    auto grid = makePlanner(s.ss->getSpaceInformation(), "corner-astar-grid");
+    grid->params().setParam("reverse", "on");
+    EXPECT_THROW(grid->setup(), std::invalid_argument);
+}
