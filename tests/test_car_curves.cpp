@@ -158,3 +158,31 @@ TEST(CarCurves, SamplingFollowsTheSegmentsAtTheRadius)
 }
 
 }  // namespace
+
+// The analytic expansion's alternatives: the k shortest distinct words, shortest first, the
+// first the shortest curve itself, every one landing on the goal; Reeds-Shepp has more of them.
+TEST(CarCurves, TheShortestWordsComeShortestFirstAndAllLand)
+{
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> xy(-8, 8), yaw(-M_PI, M_PI);
+    int moreRs = 0;
+    for (int k = 0; k < 2000; ++k)
+    {
+        const Pose2 a{xy(rng), xy(rng), yaw(rng)}, b{xy(rng), xy(rng), yaw(rng)};
+        const std::vector<CarCurve> rs = gridcar::reedsSheppCurves(a, b, 2.0, 6), du = gridcar::dubinsCurves(a, b, 2.0, 6);
+        ASSERT_FALSE(rs.empty());
+        ASSERT_FALSE(du.empty());
+        EXPECT_NEAR(rs.front().length, gridcar::reedsSheppCurve(a, b, 2.0).length, 1e-12);
+        EXPECT_NEAR(du.front().length, gridcar::dubinsCurve(a, b, 2.0).length, 1e-12);
+        for (const auto *set : {&rs, &du})
+            for (std::size_t i = 0; i < set->size(); ++i)
+            {
+                EXPECT_LT(landingError(a, b, (*set)[i]), 1e-6);
+                if (i > 0) EXPECT_GE((*set)[i].length, (*set)[i - 1].length);
+            }
+        EXPECT_LE(du.size(), 6u);
+        moreRs += rs.size() > du.size();
+    }
+    EXPECT_GT(moreRs, 1000);
+    EXPECT_TRUE(gridcar::reedsSheppCurves({0, 0, NAN}, {1, 1, 0}, 2.0, 3).empty());
+}

@@ -93,22 +93,42 @@ void Candidates::add(std::initializer_list<CurveSegment> segs)
 
 CarCurve Candidates::shortestLanding(const Pose2 &goal, double radius)
 {
-    std::sort(words_.begin(), words_.end(), [](const Word &a, const Word &b) { return a.length < b.length; });
+    std::vector<CarCurve> one = landings(goal, radius, 1);
+    if (!one.empty()) return one.front();
     CarCurve out;
     out.radius = radius;
     out.length = std::numeric_limits<double>::infinity();
+    return out;
+}
+
+std::vector<CarCurve> Candidates::landings(const Pose2 &goal, double radius, int maxCount)
+{
+    std::stable_sort(words_.begin(), words_.end(), [](const Word &a, const Word &b) { return a.length < b.length; });
+    std::vector<CarCurve> out;
     for (const Word &w : words_)
     {
+        if (int(out.size()) >= maxCount) break;
         // integrate the word from the origin at unit radius: it must land on the goal
         Pose2 p{};
         for (int i = 0; i < w.count; ++i) p = driveSegment(p, w.segments[std::size_t(i)], 1.0);
         const double miss = std::max(std::hypot(p.x - goal.x, p.y - goal.y), std::abs(std::remainder(p.yaw - goal.yaw, 2 * M_PI)));
         if (!(miss < kLandTolerance)) continue;
         // the whole word, zero-length pieces included (the word stays one of the family's)
+        CarCurve c;
+        c.radius = radius;
         for (int i = 0; i < w.count; ++i)
-            out.segments[std::size_t(out.count++)] = {w.segments[std::size_t(i)].steer, w.segments[std::size_t(i)].length * radius};
-        out.length = w.length * radius;
-        return out;
+            c.segments[std::size_t(c.count++)] = {w.segments[std::size_t(i)].steer, w.segments[std::size_t(i)].length * radius};
+        c.length = w.length * radius;
+        bool same = false;  // the same curve found by another formula (a symmetry of the family)
+        for (const CarCurve &o : out)
+        {
+            if (std::abs(o.length - c.length) > 1e-9 * std::max(1.0, c.length)) continue;
+            const Pose2 m1 = curvePose({}, o, o.length / 3), m2 = curvePose({}, c, c.length / 3);
+            const Pose2 n1 = curvePose({}, o, 2 * o.length / 3), n2 = curvePose({}, c, 2 * c.length / 3);
+            if (std::hypot(m1.x - m2.x, m1.y - m2.y) < 1e-9 * radius && std::hypot(n1.x - n2.x, n1.y - n2.y) < 1e-9 * radius)
+                same = true;
+        }
+        if (!same) out.push_back(c);
     }
     return out;
 }

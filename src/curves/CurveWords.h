@@ -35,6 +35,9 @@ public:
     /// The shortest candidate that, driven from the origin, ends within kLandTolerance of
     /// @p goal, scaled to @p radius; an empty curve when none does.
     CarCurve shortestLanding(const Pose2 &goal, double radius);
+    /// The @p maxCount shortest candidates that land on @p goal (shortest first), scaled to
+    /// @p radius; words of the same length and steering as a shorter one are left out.
+    std::vector<CarCurve> landings(const Pose2 &goal, double radius, int maxCount);
 
 private:
     struct Word

@@ -67,15 +67,21 @@ void addWords(curves::Candidates &c, double d, double alpha, double beta)
 }
 }  // namespace
 
-CarCurve dubinsCurve(const Pose2 &a, const Pose2 &b, double radius)
+std::vector<CarCurve> dubinsCurves(const Pose2 &a, const Pose2 &b, double radius, int maxCount)
 {
-    if (!curves::finitePoses(a, b, radius)) return curves::Candidates().shortestLanding({}, 1.0);
+    if (!curves::finitePoses(a, b, radius)) return {};
     const Pose2 g = curves::normalisedGoal(a, b, radius);
     const double d = std::hypot(g.x, g.y), th = d > 0 ? std::atan2(g.y, g.x) : 0.0;
     curves::Candidates c;
     c.add({});  // equal poses: no motion at all
     addWords(c, d, mod2pi(-th), mod2pi(g.yaw - th));
-    return c.shortestLanding(g, radius);
+    return c.landings(g, radius, maxCount);
+}
+
+CarCurve dubinsCurve(const Pose2 &a, const Pose2 &b, double radius)
+{
+    std::vector<CarCurve> one = dubinsCurves(a, b, radius, 1);
+    return one.empty() ? curves::Candidates().shortestLanding({}, 1.0) : one.front();
 }
 
 }  // namespace gridcar

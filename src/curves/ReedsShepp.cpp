@@ -209,7 +209,13 @@ void addCCSCC(curves::Candidates &c, double x, double y, double phi)
 
 CarCurve reedsSheppCurve(const Pose2 &a, const Pose2 &b, double radius)
 {
-    if (!curves::finitePoses(a, b, radius)) return curves::Candidates().shortestLanding({}, 1.0);
+    std::vector<CarCurve> one = reedsSheppCurves(a, b, radius, 1);
+    return one.empty() ? curves::Candidates().shortestLanding({}, 1.0) : one.front();
+}
+
+std::vector<CarCurve> reedsSheppCurves(const Pose2 &a, const Pose2 &b, double radius, int maxCount)
+{
+    if (!curves::finitePoses(a, b, radius)) return {};
     const Pose2 g = curves::normalisedGoal(a, b, radius);
     const double x = g.x, y = g.y, phi = g.yaw;
     // the reversed problem of Reeds and Shepp's "backwards" symmetry
@@ -221,7 +227,7 @@ CarCurve reedsSheppCurve(const Pose2 &a, const Pose2 &b, double radius)
     addCCCC(c, x, y, phi);
     addCCSC(c, x, y, phi, xb, yb);
     addCCSCC(c, x, y, phi);
-    return c.shortestLanding(g, radius);
+    return c.landings(g, radius, maxCount);
 }
 
 }  // namespace gridcar

@@ -22,6 +22,7 @@
 #include "gridcar/core/Pose2.h"
 
 #include <array>
+#include <vector>
 
 namespace gridcar
 {
@@ -74,5 +75,12 @@ CarCurve dubinsCurve(const Pose2 &a, const Pose2 &b, double radius);
 /// The shortest Reeds-Shepp curve from @p a to @p b at turning radius @p radius > 0 (the 48
 /// words of Reeds and Shepp; cusps allowed).
 CarCurve reedsSheppCurve(const Pose2 &a, const Pose2 &b, double radius);
+
+/// The @p maxCount shortest distinct Dubins curves from @p a to @p b (shortest first; the first
+/// is dubinsCurve()): the other words are the alternatives an analytic expansion tries when the
+/// shortest one is blocked. Empty for non-finite input or a radius that is not > 0.
+std::vector<CarCurve> dubinsCurves(const Pose2 &a, const Pose2 &b, double radius, int maxCount);
+/// The same for Reeds-Shepp curves (the first is reedsSheppCurve()).
+std::vector<CarCurve> reedsSheppCurves(const Pose2 &a, const Pose2 &b, double radius, int maxCount);
 
 }  // namespace gridcar
