@@ -205,7 +205,7 @@ std::string labelOf(const std::string &name, const PlannerParams &p)
 QueryResult runOne(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &s, const Pose2 &t,
                    double limit, Row &row)
 {
-    QueryResult r = runQuery(setup, planner, s, t, limit);
+    QueryResult r = runQuery(setup, planner, s, t, limit, /*freeGoalHeading=*/true);  // the pairs have no goal yaw
     ++row.runs;
     row.times.push_back(r.seconds);
     if (r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)

@@ -113,7 +113,7 @@ TEST(CarLatticeSearch, EveryCarLatticePlannerReturnsDrivablePathsOnTheCampus)
         for (int k = 0; k < 5; ++k)
         {
             const Pose2 a = randomFree(*s.checker, rng), b = randomFree(*s.checker, rng);
-            const QueryResult r = runQuery(s, p, a, b, 20.0);
+            const QueryResult r = runQuery(s, p, a, b, 20.0, /*freeGoalHeading=*/true);  // a random yaw means nothing
             if (r.status != ob::PlannerStatus::EXACT_SOLUTION) continue;
             ++exact;
             // independent: exact FCL at 2 cm, curvature <= K_max
@@ -150,7 +150,7 @@ TEST(CarLatticeSearch, FreeStartAndGoalHeadingInANorthSouthCorridor)
     for (const auto &[name, params] : planners)
     {
         auto p = configurePlanner(s.ss->getSpaceInformation(), {name, params, true, false});
-        const QueryResult r = runQuery(s, p, {start.x, start.y, yaw}, goal, 20.0);
+        const QueryResult r = runQuery(s, p, {start.x, start.y, yaw}, goal, 20.0, /*freeGoalHeading=*/true);
         EXPECT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION)
             << name << " " << params[0].second << " ends at " << r.path.back().x << "," << r.path.back().y;
         if (r.status != ob::PlannerStatus::EXACT_SOLUTION) continue;

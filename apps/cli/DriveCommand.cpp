@@ -124,7 +124,7 @@ bool pathToDrive(const DriveOptions &o, Query &query, std::vector<Pose2> &path, 
     for (const auto &[what, pose] : {std::make_pair(std::string("start"), query.start), std::make_pair(std::string("goal"), query.goal)})
         if (const std::string why = whyInvalid(query, pose, what == "start" ? !query.startYaw : !query.goalYaw); !why.empty())
             throw InputError(what + " " + describe(pose) + " is " + why);
-    const QueryResult q = runQuery(query.setup, queryPlanner(p, query), query.start, query.goal, p.timeLimit);
+    const QueryResult q = runQuery(query.setup, queryPlanner(p, query), query.start, query.goal, p.timeLimit, !query.goalYaw);
     DrivingTimeParams profile;
     profile.reversing = query.setup.reversing();  // a stop at each Reeds-Shepp cusp
     j["plan"] = {{"planner", p.planner},         {"status", q.status.asString()}, {"cost", q.cost},

@@ -64,7 +64,7 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
                     "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: free start heading for the grid "
                     "planners (OMPL planners start at the first yaw, in 5-degree steps from 0, at which the vehicle fits)");
     cmd->add_option("--start-cell", q.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row)");
-    cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW_DEG] (the goal heading counts only with --param match_goal_heading=1; without a yaw the vehicle must fit there at some heading)");
+    cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW_DEG]: with a yaw the car-lattice planners (and OMPL's) arrive at that heading (--param match_goal_heading=0 relaxes it); without one, at any heading where the vehicle fits");
     cmd->add_option("--goal-cell", q.goalCell, "Goal COL,ROW[,HEADING_DEG]");
     addVehicleOption(cmd, q.vehicle);
     cmd->add_option("--param", q.params, "NAME=VALUE: set a declared planner parameter (repeatable)");

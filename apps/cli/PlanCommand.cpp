@@ -111,7 +111,7 @@ int runPlan(const PlanOptions &o)
             std::cout << nlohmann::json{{"planner", o.query.planner}, {"status", "Invalid " + what}, {"error", msg}}.dump() << "\n";
         throw InputError(msg);
     }
-    const QueryResult q = runQuery(query.setup, planner, query.start, query.goal, o.query.timeLimit);
+    const QueryResult q = runQuery(query.setup, planner, query.start, query.goal, o.query.timeLimit, !query.goalYaw);
     if (o.json)
     {
         nlohmann::json j = resultJson(q, query.vehicle);

@@ -187,7 +187,7 @@ void benchmarkQuery(BenchRun &run, std::size_t qi, double timeLimit, const std::
     if (!setup.checker->isValid(start)) bad(p, q + ": the start is off the map or in collision for " + run.w.vehicle.name);
     if (!setup.checker->isValid(goal)) bad(p, q + ": the goal is off the map or in collision for " + run.w.vehicle.name);
     setup.ss->clear();
-    setup.setStartAndGoal(start, goal);
+    setup.setStartAndGoal(start, goal, /*freeGoalHeading=*/!goalYaw);
     const std::string expName = p.name + "-q" + std::to_string(qi + 1) + limitTag;
     ompl::tools::Benchmark b(*setup.ss, expName);
     b.addExperimentParameter("query", "INTEGER", std::to_string(qi + 1));

@@ -106,12 +106,12 @@ std::vector<Pose2> solutionPoses(const GridSetup &setup, const ompl::base::Plann
 }
 
 QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &start, const Pose2 &goal,
-                     double timeLimit)
+                     double timeLimit, bool freeGoalHeading)
 {
     using Clock = std::chrono::steady_clock;
     QueryResult q;
     setup.ss->clear();
-    setup.setStartAndGoal(start, goal);
+    setup.setStartAndGoal(start, goal, freeGoalHeading);
     setup.ss->setPlanner(planner);
     const auto t0 = Clock::now();
     q.status = setup.ss->solve(timeLimit);

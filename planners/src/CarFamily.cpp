@@ -10,11 +10,16 @@
 
 namespace gridcar
 {
-void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision)
+void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision, const CarLatticeConfig *fallback)
 {
-    if (collision == collision_ && search_ && search_->lattice().config() == cfg) return;
+    last_ = nullptr;
+    const bool same = collision == collision_ && search_ && search_->lattice().config() == cfg;
+    const bool sameFallback = fallback ? fallback_ && fallback_->lattice().config() == *fallback : !fallback_;
+    if (same && sameFallback) return;
     collision_ = std::move(collision);
-    search_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(cfg));
+    if (!same) search_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(cfg));
+    fallback_.reset();
+    if (fallback) fallback_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(*fallback));
 }
 
 FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
@@ -28,6 +33,7 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     q.weight = options.weight;
     q.reversePenalty = options.reversePenalty;
     q.cuspPenalty = options.cuspPenalty;
+    q.curveWithin = options.curveWithin;
     q.goal = goal.pose;
     switch (goal.kind)
     {
@@ -50,7 +56,22 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     }
     FamilyRun run;
     const auto t0 = std::chrono::steady_clock::now();
-    const CarLatticeResult r = search_->run(q, cost, cancelled, progress);
+    CarLatticeResult r = search_->run(q, cost, cancelled, progress);
+    last_ = search_.get();
+    if (fallback_ && !r.exact && r.outcome != SearchOutcome::Cancelled && !cancelled())
+    {
+        // the lattice's nodes could not make it (a tight spot): Hybrid A*'s finer manoeuvres,
+        // in the time that is left; its answer is kept if it reaches the goal
+        CarLatticeResult h = fallback_->run(q, cost, cancelled, progress);
+        h.expanded += r.expanded;
+        if (h.exact || r.path.empty())
+        {
+            r = std::move(h);
+            last_ = fallback_.get();
+        }
+        else
+            r.expanded = h.expanded;
+    }
     run.searchSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.expanded = r.expanded;
     run.cost = r.cost;
@@ -65,8 +86,8 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
 
 void CarFamily::plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const
 {
-    if (!search_) return;
-    search_->forEachExpanded([&](const Pose2 &node, const Pose2 &parent) {
+    if (!search()) return;
+    search()->forEachExpanded([&](const Pose2 &node, const Pose2 &parent) {
         if (node.x == parent.x && node.y == parent.y && node.yaw == parent.yaw)
             data.addStartVertex(ompl::base::PlannerDataVertex(states.at(0, node)));
         else

@@ -49,7 +49,7 @@ ompl::base::PlannerStatus GoalAdapter::read(const ompl::base::Goal *goal, bool m
         out.state = gs->getState();
         out.pose = toPose(out.state);
         out.yawTolerance = matchHeading ? 0.0 : -1.0;
-        if (!si_->satisfiesBounds(out.state)) return invalid("goal state is off the map");
+        if (!si_->satisfiesBounds(out.state)) return invalid("goal state is outside the space's bounds (off the map, or a yaw outside [-pi, pi): OMPL's SO(2) excludes +pi)");
         const bool atItsHeading = matchHeading || !anyHeading;
         const bool ok = atItsHeading ? collision.poseFree(out.pose) : collision.fitsAtSomeHeading(out.pose.x, out.pose.y, 72);
         return ok ? PlannerStatus(PlannerStatus::UNKNOWN)

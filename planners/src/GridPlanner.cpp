@@ -82,7 +82,13 @@ void GridPlanner::setup()
         if (params_.reverse == "on" && dynamic_cast<const ompl::base::DubinsStateSpace *>(si_->getStateSpace().get()))
             throw std::invalid_argument(getName() + ": reverse=on on a Dubins space, which drives forwards only (use "
                                                     "reverse=auto or the Reeds-Shepp space)");
-        car_.setup(carLatticeConfig(), collision_);
+        if (params_.primitives == "auto")
+        {
+            const CarLatticeConfig hybrid = carLatticeConfig(true);
+            car_.setup(carLatticeConfig(false), collision_, &hybrid);
+        }
+        else
+            car_.setup(carLatticeConfig(), collision_);
         return;  // no per-cell move cache or dense search arrays on the car lattice
     }
     std::unique_ptr<GridNodes> nodes = makeGridNodes();
@@ -129,14 +135,15 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     // the car lattice arrives at its own heading: without match_goal_heading a goal state
     // where the car fits at some heading is reachable; a grid path ends at the state itself
     const PlannerStatus goal =
-        goals_.read(pdef_->getGoal().get(), params_.matchGoalHeading, /*anyHeading=*/car, *collision_, getName(), goal_);
+        goals_.read(pdef_->getGoal().get(), matchGoalHeading(), /*anyHeading=*/car, *collision_, getName(), goal_);
     if (goal != PlannerStatus::UNKNOWN) return goal;
     const auto cancelled = [&] { return ptc.eval(); };
     FamilyRun run;
     if (car)
     {
         const std::unique_ptr<LatticeCostModel> cost = carCost();
-        const CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty, cuspPenalty()};
+        const CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty, cuspPenalty(),
+                                       params_.curveHeuristic ? 30.0 * carSearch()->lattice().config().turnRadius : 0.0};
         run = car_.solve(si_, start, params_.freeStartHeading, options, goal_, *cost, cancelled, support_.progress());
     }
     else

@@ -23,6 +23,27 @@ void GridPlanner::declareCarLatticeParams()
     declareParam<double>("reverse_penalty", this, &GridPlanner::setReversePenalty, &GridPlanner::reversePenalty,
                          "1.:0.5:10.");
     declareParam<double>("cusp_penalty", this, &GridPlanner::setCuspPenalty, &GridPlanner::cuspPenalty, "0.:1.:100.");
+    declareParam<bool>("curve_heuristic", this, &GridPlanner::setCurveHeuristic, &GridPlanner::curveHeuristic, "0,1");
+    declareParam<std::string>("primitives", this, &GridPlanner::setPrimitives, &GridPlanner::primitives, "auto,lattice,hybrid");
+}
+
+bool GridPlanner::matchGoalHeading() const
+{
+    return setParams_.count("match_goal_heading") ? params_.matchGoalHeading : usesCarLattice();
+}
+
+void GridPlanner::setCurveHeuristic(bool on)
+{
+    params_.curveHeuristic = on;
+    parameterSet("curve_heuristic");
+}
+
+void GridPlanner::setPrimitives(const std::string &p)
+{
+    if (p != "lattice" && p != "hybrid" && p != "auto")
+        throw std::invalid_argument(getName() + ": primitives must be lattice, hybrid or auto, got '" + printable(p) + "'");
+    params_.primitives = p;
+    parameterSet("primitives");
 }
 
 void GridPlanner::setReverse(const std::string &r)
@@ -122,7 +143,9 @@ void GridPlanner::setLatticeHeadings(int h)
     parameterSet("headings");
 }
 
-CarLatticeConfig GridPlanner::carLatticeConfig() const
+CarLatticeConfig GridPlanner::carLatticeConfig() const { return carLatticeConfig(params_.primitives == "hybrid"); }
+
+CarLatticeConfig GridPlanner::carLatticeConfig(bool hybrid) const
 {
     const double rmin = turningRadius();
     CarLatticeConfig cfg;
@@ -147,6 +170,20 @@ CarLatticeConfig GridPlanner::carLatticeConfig() const
     // arcs 1 % wider than R_min: sampled curves then stay within K_max by a clear margin
     cfg.turnRadius = rmin > 0 ? 1.01 * rmin : cfg.cell;
     cfg.reverse = reversing();
+    if (hybrid)
+    {
+        // 72 bins of 5 degrees; cells small enough that an arc of one bin at R_min leaves its
+        // cell (1.5 cells), on the map's resolution where there is a map
+        cfg.hybrid = true;
+        cfg.headings = 72;
+        const double want = cfg.turnRadius * (2 * M_PI / 72) / 1.5;
+        const double res = checker_ ? checker_->grid().resolution() : 0.0;
+        if (params_.latticeCell > 0 && params_.primitives == "hybrid")
+            cfg.cell = params_.latticeCell;
+        else
+            cfg.cell = res > 0 ? res * std::max(1.0, std::floor(want / res)) : want;
+        cfg.spacing = std::min(cfg.spacing, cfg.cell / 2);
+    }
     return cfg;
 }
 

@@ -1,6 +1,9 @@
 #include "gridcar/spaces/Setup.h"
 
+#include "gridcar/core/Angles.h"
+
 #include "gridcar/spaces/CurveSpaces.h"
+#include "gridcar/spaces/Goals.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/ScopedState.h>
@@ -47,13 +50,20 @@ GridSetup makeGridSetup(std::shared_ptr<const OccupancyGrid> grid, const Vehicle
     return s;
 }
 
-void GridSetup::setStartAndGoal(const Pose2 &start, const Pose2 &goal) const
+void GridSetup::setStartAndGoal(const Pose2 &start, const Pose2 &goal, bool freeGoalHeading) const
 {
     ompl::base::ScopedState<ompl::base::SE2StateSpace> a(ss->getStateSpace()), b(ss->getStateSpace());
     a->setXY(start.x, start.y);
-    a->setYaw(start.yaw);
+    a->setYaw(wrapYaw(start.yaw));  // OMPL's SO(2) bounds are [-pi, pi): a yaw of +pi is out of them
+    if (freeGoalHeading)
+    {
+        ss->clearStartStates();
+        ss->addStartState(a);
+        ss->setGoal(std::make_shared<PositionGoal>(ss->getSpaceInformation(), goal.x, goal.y, 1e-6, wrapYaw(goal.yaw), -1.0));
+        return;
+    }
     b->setXY(goal.x, goal.y);
-    b->setYaw(goal.yaw);
+    b->setYaw(wrapYaw(goal.yaw));
     ss->setStartAndGoalStates(a, b);
 }
 

@@ -1,6 +1,7 @@
 #include "gridcar/planners/search/CarLattice.h"
 
 #include "gridcar/core/Angles.h"
+#include "gridcar/curves/CarCurves.h"
 
 #include <cmath>
 #include <limits>
@@ -24,9 +25,11 @@ CarLattice::CarLattice(const CarLatticeConfig &config) : config_(config)
     if (!positive(config.spacing)) throw std::invalid_argument("car lattice: sample spacing must be a finite number > 0");
     if (!(std::isfinite(config.reach) && config.reach >= 0.0))
         throw std::invalid_argument("car lattice: vehicle reach must be a finite number >= 0");
-    if (config.headings != 8 && config.headings != 16)
-        throw std::invalid_argument("car lattice: headings must be 8 or 16 (directions of lattice vectors), got " +
-                                    std::to_string(config.headings));
+    if (config.hybrid ? (config.headings < 16 || config.headings > 360) : (config.headings != 8 && config.headings != 16))
+        throw std::invalid_argument(config.hybrid ? "car lattice: hybrid heading bins must be 16 to 360, got " +
+                                                        std::to_string(config.headings)
+                                                  : "car lattice: headings must be 8 or 16 (directions of lattice vectors), got " +
+                                                        std::to_string(config.headings));
     // first-quadrant vectors, counter-clockwise; the others are their rotations by 90 degrees
     const std::vector<std::array<int, 2>> quadrant =
         config.headings == 8 ? std::vector<std::array<int, 2>>{{1, 0}, {1, 1}} :
@@ -36,8 +39,15 @@ CarLattice::CarLattice(const CarLatticeConfig &config) : config_(config)
         {
             for (int k = 0; k < q; ++k) v = {-v[1], v[0]};
             vec_.push_back(v);
-            yaw_.push_back(std::atan2(double(v[1]), double(v[0])));
+            stepYaw_.push_back(std::atan2(double(v[1]), double(v[0])));
         }
+    if (config.hybrid)
+    {
+        for (int h = 0; h < config.headings; ++h) yaw_.push_back(wrapYaw(2 * M_PI * h / config.headings));
+        addHybrid();
+        return;
+    }
+    yaw_ = stepYaw_;
     prims_.resize(std::size_t(config.headings));
     for (int h = 0; h < config.headings; ++h)
     {
@@ -72,8 +82,41 @@ void CarLattice::addReverse(int h)
     }
 }
 
+void CarLattice::addHybrid()
+{
+    // one primitive length: a whole number of bins of heading on an arc of R_min, and at least
+    // 1.5 cells so that every primitive leaves its start's cell
+    const double bin = 2 * M_PI / config_.headings, R = config_.turnRadius;
+    const double length = R * bin * std::max(1.0, std::ceil(1.5 * config_.cell / (R * bin) - 1e-9));
+    prims_.assign(1, {});
+    std::vector<double> radii{0.0, R};
+    for (double r : config_.extraRadii) radii.push_back(r);
+    for (int gear : config_.reverse ? std::vector<int>{1, -1} : std::vector<int>{1})
+        for (double r : radii)
+            for (Steer steer : r == 0 ? std::vector<Steer>{Steer::Straight} : std::vector<Steer>{Steer::Left, Steer::Right})
+            {
+                LatticePrimitive p;
+                p.length = length;
+                p.radius = r;
+                p.reverse = gear < 0;
+                const CurveSegment seg{steer, gear * length};
+                const Pose2 end = driveSegment({}, seg, r > 0 ? r : 1.0);
+                p.turn = end.yaw;
+                const double travel = r > 0 ? length * (1.0 + config_.reach / r) : length;
+                const int n = std::max(1, int(std::ceil(travel / config_.spacing - 1e-9)));
+                for (int k = 1; k <= n; ++k) p.samples.push_back(driveSegment({}, {steer, gear * length * k / n}, r > 0 ? r : 1.0));
+                prims_[0].push_back(std::move(p));
+            }
+}
+
 int CarLattice::nearestHeading(double yaw) const
 {
+    if (config_.hybrid)
+    {
+        const int n = config_.headings;
+        const int h = int(std::lround(wrapAngle(yaw) / (2 * M_PI / n)));
+        return ((h % n) + n) % n;
+    }
     int best = 0;
     double bestD = std::numeric_limits<double>::infinity();
     for (int h = 0; h < headings(); ++h)

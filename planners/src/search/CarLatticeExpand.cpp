@@ -26,18 +26,30 @@ struct CarExpander
     std::uint64_t expansions{0};
     std::vector<Pose2> samples;  ///< reused for every primitive
 
-    Pose2 poseOf(std::uint32_t s) const
+    Pose2 poseOf(std::uint32_t s) const { return world(S.pose_[s]); }
+    /// A lattice-frame pose in the world, yaw wrapped (as nodePose()).
+    Pose2 world(const Pose2 &lat) const
     {
-        const auto k = S.unpack(S.states_.key(s));
-        return S.nodePose(k.i, k.j, k.h);
+        Pose2 p = S.toWorld(lat);
+        p.yaw = wrapYaw(p.yaw);
+        return p;
     }
     CarHeuristic bounds;  ///< the lower bounds (search/CarHeuristics.h); all zero when not aiming
 
     CarExpander(CarLatticeSearch &search, const LatticeCostModel &c) : S(search), cost(c)
     {
         bounds.euclidean = {S.query_.goal, cost.minCostPerMetre()};
-        bounds.obstacle = {S.ratio_, S.seedRadius_ * cost.minCostPerMetre()};
+        // a hybrid state lies up to half a cell's diagonal from the node its 2D distance is read at
+        const double slack = S.lattice_->hybrid() ? S.lattice_->cell() * M_SQRT1_2 : 0.0;
+        bounds.obstacle = {S.ratio_, (S.seedRadius_ + slack) * cost.minCostPerMetre()};
         bounds.turn = {S.query_.goal, cost.minTurnCostPerRad()};
+        // a goal heading to match: the Reeds-Shepp / Dubins length to the goal pose, within
+        // the query's distance of the goal
+        if (S.query_.goalYawTolerance == 0 && S.query_.shoot && S.query_.curveWithin > 0)
+        {
+            const double R = S.lattice_->config().turnRadius;
+            bounds.curve = {S.query_.goal, R, S.lattice_->config().reverse, cost.minCostPerMetre(), S.query_.curveWithin};
+        }
         bounds.useObstacle = S.use2d_;
         bounds.weight = S.query_.weight;
     }
@@ -46,11 +58,18 @@ struct CarExpander
         if (!S.query_.aim) return 0.0;
         return bounds.position(S.nodePose(i, j, 0), S.use2d_ ? S.h2d_->distance(i, j) : -1.0);
     }
-    double turnBound(int i, int j, int hd) const { return S.query_.aim ? bounds.turning(S.nodePose(i, j, hd)) : 0.0; }
+    /// The heuristic at lattice-frame pose @p lat of node (i, j) (a node's pose, or a hybrid state's).
+    double hAt(const Pose2 &lat, int i, int j) const
+    {
+        if (!S.query_.aim) return 0.0;
+        const Pose2 p = world(lat);
+        const double hp = bounds.position(p, S.use2d_ ? S.h2d_->distance(i, j) : -1.0);
+        return hp == kInf ? hp : hp + bounds.turning(p);
+    }
     double heuristic(std::uint32_t s) const
     {
         const auto k = S.unpack(S.states_.key(s));
-        return hNode(k.i, k.j) + turnBound(k.i, k.j, k.h);
+        return hAt(S.pose_[s], k.i, k.j);
     }
     bool isGoal(std::uint32_t s)
     {
@@ -63,26 +82,40 @@ struct CarExpander
     void successors(std::uint32_t s, Emit &&emit)
     {
         const auto k = S.unpack(S.states_.key(s));
-        const Pose2 from = S.nodePose(k.i, k.j, k.h);
+        const Pose2 at = S.pose_[s];  // a copy: intern() below may grow pose_
+        const Pose2 from = world(at);
         const auto &prims = S.lattice_->primitives(k.h);
+        const bool hybrid = S.lattice_->hybrid();
+        const double c = S.lattice_->cell(), ca = std::cos(at.yaw), sa = std::sin(at.yaw);
         for (std::size_t p = 0; p < prims.size(); ++p)
         {
             const LatticePrimitive &prim = prims[p];
-            const int ni = k.i + prim.di, nj = k.j + prim.dj;
+            int ni = k.i + prim.di, nj = k.j + prim.dj, nh = prim.to;
+            Pose2 end{ni * c, nj * c, S.lattice_->yaw(nh)};
+            if (hybrid)
+            {
+                // the arc from the state's own pose; its bin is the successor
+                const Pose2 &q = prim.samples.back();
+                end = {at.x + ca * q.x - sa * q.y, at.y + sa * q.x + ca * q.y, wrapYaw(at.yaw + q.yaw)};
+                ni = int(std::lround(end.x / c));
+                nj = int(std::lround(end.y / c));
+                nh = S.lattice_->nearestHeading(end.yaw);
+                if (ni == k.i && nj == k.j && nh == k.h) continue;  // still in its own bin
+            }
             if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
-            S.worldSamples(k.i, k.j, prim, samples);
+            S.worldSamples(at, prim, samples);
             if (!S.motionFree(from, samples)) continue;
-            double hn = hNode(ni, nj);
+            const double hn = hAt(end, ni, nj);
             if (hn == kInf) continue;
-            hn += turnBound(ni, nj, prim.to);
-            const std::uint32_t id = S.intern(ni, nj, prim.to);
-            double c = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+            const std::uint32_t id = S.intern(ni, nj, nh);
+            double step = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
             const std::int8_t gear = prim.reverse ? -1 : 1;
-            if (prim.reverse) c *= S.query_.reversePenalty;
-            if (S.gear_[s] != 0 && S.gear_[s] != gear) c += S.query_.cuspPenalty;  // a gear change
-            emit(id, c, [this, id, p, hn, gear] {
+            if (prim.reverse) step *= S.query_.reversePenalty;
+            if (S.gear_[s] != 0 && S.gear_[s] != gear) step += S.query_.cuspPenalty;  // a gear change
+            emit(id, step, [this, id, p, hn, gear, end] {
                 S.prim_[id] = std::int16_t(p);
                 S.gear_[id] = gear;
+                S.pose_[id] = end;
                 return hn;
             });
         }
@@ -103,8 +136,8 @@ std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
     std::vector<std::uint32_t> chain;
     for (std::uint32_t s = end; s != SearchSpace::kNoParent; s = space_.parent(s)) chain.push_back(s);
     std::reverse(chain.begin(), chain.end());
-    const auto k0 = unpack(states_.key(chain.front()));
-    Pose2 start = nodePose(k0.i, k0.j, k0.h);
+    Pose2 start = statePose(chain.front());
+    start.yaw = wrapYaw(start.yaw);
     start.x = query_.start.x;
     start.y = query_.start.y;
     std::vector<Pose2> path{start};
@@ -113,7 +146,7 @@ std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
         const auto kp = unpack(states_.key(chain[n - 1]));
         const LatticePrimitive &p = lattice_->primitives(kp.h)[std::size_t(prim_[chain[n]])];
         std::vector<Pose2> w;
-        worldSamples(kp.i, kp.j, p, w);
+        worldSamples(pose_[chain[n - 1]], p, w);
         for (Pose2 q : w)
         {
             q.yaw = wrapYaw(q.yaw);
@@ -130,7 +163,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     setFrame(q);
     CarLatticeResult out;
     const double c = lattice_->cell();
-    const int H = lattice_->headings();
+    const int H = lattice_->neighbourCount();  // the 2D graph's steps (the lattice's headings)
     if (!h2d_)
     {
         // made once, its node storage reused by every run (ObstacleHeuristic::reset)
@@ -149,7 +182,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     h2d_->setCancel(cancelled);
     cancelled_ = &cancelled;
     std::vector<double> yaws;
-    for (int h = 0; h < H; ++h) yaws.push_back(phi_ + lattice_->yaw(h));
+    for (int h = 0; h < H; ++h) yaws.push_back(phi_ + lattice_->stepYaw(h));
     col_->setHeadings(yaws);
     if (cost.weighted())
         h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });
@@ -171,6 +204,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     states_.clear();
     prim_.clear();
     gear_.clear();
+    pose_.clear();
     shotFrom_ = SearchSpace::kNoParent;
     shot_.clear();
     shotCost_ = 0;
@@ -214,16 +248,14 @@ void CarLatticeSearch::forEachExpanded(const std::function<void(const Pose2 &, c
 {
     space_.forEach([&](std::uint32_t s, bool closed) {
         if (!closed) return;
-        const auto k = unpack(states_.key(s));
-        const Pose2 node = nodePose(k.i, k.j, k.h);
+        auto wrapped = [this](std::uint32_t t) {
+            Pose2 q = statePose(t);
+            q.yaw = wrapYaw(q.yaw);
+            return q;
+        };
+        const Pose2 node = wrapped(s);
         const std::uint32_t p = space_.parent(s);
-        if (p == SearchSpace::kNoParent)
-            fn(node, node);
-        else
-        {
-            const auto kp = unpack(states_.key(p));
-            fn(node, nodePose(kp.i, kp.j, kp.h));
-        }
+        fn(node, p == SearchSpace::kNoParent ? node : wrapped(p));
     });
 }
 

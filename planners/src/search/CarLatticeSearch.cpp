@@ -33,7 +33,7 @@ double CarLatticeSearch::measureRatio() const
 {
     // open-space distances of the 2D graph (the headings' vectors both ways) from the origin
     const CarLattice &L = *lattice_;
-    int W = 1;
+    int W = L.hybrid() ? 24 : 1;
     for (int h = 0; h < L.headings(); ++h)
         for (const auto &p : L.primitives(h)) W = std::max({W, std::abs(p.di), std::abs(p.dj)});
     W += 3;
@@ -49,7 +49,7 @@ double CarLatticeSearch::measureRatio() const
         pq.pop();
         if (d > dist[std::size_t(k)]) continue;
         const int x = k % n, y = k / n;
-        for (int h = 0; h < L.headings(); ++h)
+        for (int h = 0; h < L.neighbourCount(); ++h)
         {
             const int a = x + L.vi(h), b = y + L.vj(h);
             if (a < 0 || b < 0 || a >= n || b >= n) continue;
@@ -62,6 +62,18 @@ double CarLatticeSearch::measureRatio() const
         }
     }
     double ratio = 1.0;
+    if (L.hybrid())
+    {
+        // hybrid primitives end between nodes: the graph's detour over the straight line, on
+        // every node of a ring far enough out that the graph's own steps fit
+        for (int b = 0; b < n; ++b)
+            for (int a = 0; a < n; ++a)
+            {
+                const double e = L.cell() * std::hypot(double(a - W), double(b - W));
+                if (e >= L.cell() * (W - 5) && e <= L.cell() * (W - 3)) ratio = std::max(ratio, dist[std::size_t(b) * n + a] / e);
+            }
+        return ratio;
+    }
     for (int h = 0; h < L.headings(); ++h)
         for (const auto &p : L.primitives(h))
             ratio = std::max(ratio, dist[std::size_t(p.dj + W) * n + (p.di + W)] / p.length);
@@ -86,10 +98,11 @@ std::uint32_t CarLatticeSearch::intern(int i, int j, int h)
 {
     const std::uint64_t k = pack(i, j, h);
     const std::uint32_t id = states_.intern(k);
-    if (id == prim_.size())  // a new state
+    if (id == prim_.size())  // a new state, at its node's pose until a primitive reaches it
     {
         prim_.push_back(-1);
         gear_.push_back(0);
+        pose_.push_back({i * lattice_->cell(), j * lattice_->cell(), lattice_->yaw(h)});
     }
     return id;
 }
@@ -100,15 +113,17 @@ Pose2 CarLatticeSearch::nodePose(int i, int j, int h) const
     return {ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, wrapYaw(phi_ + lattice_->yaw(h))};
 }
 
-void CarLatticeSearch::worldSamples(int i, int j, const LatticePrimitive &p, std::vector<Pose2> &out) const
+void CarLatticeSearch::worldSamples(const Pose2 &at, const LatticePrimitive &p, std::vector<Pose2> &out) const
 {
     out.clear();
-    const double bx = i * lattice_->cell(), by = j * lattice_->cell();
-    for (const Pose2 &s : p.samples)
+    if (lattice_->hybrid())
     {
-        const double x = bx + s.x, y = by + s.y;
-        out.push_back({ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, phi_ + s.yaw});  // wrapped in buildPath
+        // body-frame samples turned to the state's own yaw
+        const double c = std::cos(at.yaw), s = std::sin(at.yaw);
+        for (const Pose2 &q : p.samples) out.push_back(toWorld({at.x + c * q.x - s * q.y, at.y + s * q.x + c * q.y, at.yaw + q.yaw}));
+        return;
     }
+    for (const Pose2 &s : p.samples) out.push_back(toWorld({at.x + s.x, at.y + s.y, s.yaw}));  // wrapped in buildPath
 }
 
 bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
@@ -174,7 +189,8 @@ void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
 bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)
 {
     const auto k = unpack(states_.key(s));
-    const Pose2 from = nodePose(k.i, k.j, k.h);
+    Pose2 from = statePose(s);
+    from.yaw = wrapYaw(from.yaw);
     const Pose2 &g = query_.goal;
     const double e = std::hypot(g.x - from.x, g.y - from.y);
     const double R = lattice_->config().turnRadius, c = lattice_->cell();
@@ -192,7 +208,7 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
     if (query_.goalYawTolerance < 0)
     {
         yaws.push_back(std::atan2(g.y - from.y, g.x - from.x));
-        for (int h = 0; h < lattice_->headings(); ++h) yaws.push_back(wrapYaw(phi_ + lattice_->yaw(h)));
+        for (int h = 0; h < lattice_->neighbourCount(); ++h) yaws.push_back(wrapYaw(phi_ + lattice_->stepYaw(h)));
     }
     else
     {
@@ -200,23 +216,30 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         if (query_.goalYawTolerance > 0)
             for (double d : {-query_.goalYawTolerance, query_.goalYawTolerance}) yaws.push_back(wrapYaw(g.yaw + d));
     }
-    // gridcar's Dubins curves (OMPL 1.5.2's asserts on rounding errors and would abort)
-    std::vector<std::pair<double, double>> cand;  // (length, yaw)
+    // gridcar's Dubins / Reeds-Shepp curves (OMPL 1.5.2's asserts on rounding errors and would
+    // abort); near the goal the few shortest words per end yaw, since in a tight spot the
+    // shortest one is often blocked where a slightly longer one is free
+    const bool rs = lattice_->config().reverse;
+    const int words = near ? (rs ? 4 : 2) : 1;
+    std::vector<std::pair<double, double>> cand;  // (length, index)
     std::vector<CarCurve> curves;
     std::vector<double> curveYaw;
     for (double y : yaws)
     {
         // the curve family of the primitive set's directions: Reeds-Shepp when it reverses
-        CarCurve c = lattice_->config().reverse ? reedsSheppCurve(from, {g.x, g.y, y}, R) : dubinsCurve(from, {g.x, g.y, y}, R);
-        if (c.length <= e + 2 * M_PI * R)
-        {
-            cand.push_back({c.length, double(curves.size())});
-            curves.push_back(c);
-            curveYaw.push_back(y);
-        }
+        const Pose2 to{g.x, g.y, y};
+        for (const CarCurve &c : rs ? reedsSheppCurves(from, to, R, words) : dubinsCurves(from, to, R, words))
+            if (c.length <= e + 2 * M_PI * R)
+            {
+                cand.push_back({c.length, double(curves.size())});
+                curves.push_back(c);
+                curveYaw.push_back(y);
+            }
     }
     std::sort(cand.begin(), cand.end());
-    if (cand.size() > (near ? 3u : 1u)) cand.resize(near ? 3u : 1u);
+    const std::size_t tries = near ? (rs ? 6u : 3u) : 1u;
+    if (cand.size() > tries) cand.resize(tries);
+    std::vector<double> arc;  // arc length of each sampled pose along the curve
     for (const auto &candidate : cand)
     {
         const double len = candidate.first;  // a plain variable: lambdas may capture it (C++17)
@@ -224,9 +247,25 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         ++shotsTried_;
         const CarCurve &path = curves[std::size_t(index)];
         const double y = curveYaw[std::size_t(index)];
-        const int n = std::max(1, int(std::ceil(len * (1.0 + col_->reach() / R) / lattice_->config().spacing)));
+        // each segment sampled on its own, its end included: a cusp is a pose of the path
+        // (a sample straddling it would make a kink), and no body point moves more than the
+        // lattice's spacing between two samples
+        arc.clear();
+        double at = 0;
+        for (int seg = 0; seg < path.count; ++seg)
+        {
+            const CurveSegment &sg = path.segments[std::size_t(seg)];
+            const double l = std::abs(sg.length);
+            if (l <= 0) continue;
+            const double travel = sg.steer == Steer::Straight ? l : l * (1.0 + col_->reach() / R);
+            const int m = std::max(1, int(std::ceil(travel / lattice_->config().spacing)));
+            for (int i = 1; i <= m; ++i) arc.push_back(at + l * i / m);
+            at += l;
+        }
+        if (arc.empty()) arc.push_back(len);
+        const int n = int(arc.size());
         auto poseAt = [&](int i) {
-            Pose2 p = curvePose(from, path, len * i / n);
+            Pose2 p = curvePose(from, path, std::min(arc[std::size_t(i - 1)], len));
             p.yaw = wrapYaw(p.yaw);
             return p;
         };

@@ -22,6 +22,7 @@ struct CarSearchOptions
     double weight{1.0};          ///< heuristic weight, >= 1
     double reversePenalty{1.0};  ///< factor on reversed cost, >= 1
     double cuspPenalty{0.0};     ///< cost of a gear change
+    double curveWithin{0.0};     ///< m: the Reeds-Shepp / Dubins bound within this of the goal (0: off)
 };
 
 /**
@@ -35,10 +36,13 @@ struct CarSearchOptions
 class CarFamily
 {
 public:
-    /// (Re)builds the search when @p cfg or @p collision differ from the last set-up.
-    void setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision);
-    /// The search in use (null before setup()).
-    const CarLatticeSearch *search() const { return search_.get(); }
+    /// (Re)builds the search when @p cfg or @p collision differ from the last set-up; with
+    /// @p fallback, a second search on that primitive set (the hybrid one) that a query runs
+    /// when the first ends without reaching the goal and time is left.
+    void setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision,
+               const CarLatticeConfig *fallback = nullptr);
+    /// The search of the last query (the first one before any; null before setup()).
+    const CarLatticeSearch *search() const { return last_ ? last_ : search_.get(); }
 
     /// One query: start pose (any lattice heading when @p freeStartHeading), the options, the
     /// goal, the cost model.
@@ -50,7 +54,8 @@ public:
 
 private:
     std::shared_ptr<CarCollision> collision_;
-    std::unique_ptr<CarLatticeSearch> search_;
+    std::unique_ptr<CarLatticeSearch> search_, fallback_;
+    const CarLatticeSearch *last_{nullptr};
 };
 
 }  // namespace gridcar

@@ -27,7 +27,9 @@ struct GridPlannerParams
 {
     bool allowCornerCutting{false};  ///< `allow_corner_cutting` (grid lattice)
     bool freeStartHeading{false};    ///< `free_start_heading`
-    bool matchGoalHeading{false};    ///< `match_goal_heading`
+    /// `match_goal_heading` when set; unset, true on the car lattice (a goal pose is reached
+    /// with its yaw) and false on the grid lattice (the papers' searches end at the goal cell)
+    bool matchGoalHeading{false};
     double turningRadius{0.0};       ///< `turning_radius`, m; 0 = automatic
     double maxMemoryMb{8192.0};      ///< `max_memory_mb`; 0 = none
     double latticeCell{0.0};         ///< `lattice_cell`, m; 0 = automatic
@@ -36,6 +38,8 @@ struct GridPlannerParams
     std::string reverse{"off"};      ///< `reverse` (car lattice): off, on, auto (on but on a Dubins space)
     double reversePenalty{2.0};      ///< `reverse_penalty` (car lattice): factor on reversed cost, >= 1
     double cuspPenalty{0.0};         ///< `cusp_penalty` (car lattice), m; used when set, else from the vehicle
+    bool curveHeuristic{false};      ///< `curve_heuristic` (car lattice): max in the Reeds-Shepp / Dubins length to the goal pose
+    std::string primitives{"auto"};  ///< `primitives` (car lattice): auto, lattice, or hybrid (Hybrid A*'s binned poses)
 };
 
 /**
@@ -48,8 +52,8 @@ struct GridPlannerParams
  * bound, statistics and progress properties, the status rule).
  *
  * Start: the start state (its yaw, or a free heading with `free_start_heading` = true); an
- * invalid start is INVALID_START. Goals: a GoalState (its heading only if
- * `match_goal_heading` is true), gridcar's PositionGoal, or any other GoalRegion; an
+ * invalid start is INVALID_START. Goals: a GoalState (its heading if `match_goal_heading`,
+ * by default on the car lattice), gridcar's PositionGoal, or any other GoalRegion; an
  * unreachable goal pose is INVALID_GOAL. `solve()` honours its termination condition and
  * `max_memory_mb`, returns the path to the explored state nearest the goal when it stops
  * early (APPROXIMATE_SOLUTION or TIMEOUT), and sets itself up again when the application has
@@ -76,8 +80,10 @@ public:
     /// Grid lattice: a diagonal move may cut past a blocked side cell (default false: the
     /// Moving AI rule).
     void setAllowCornerCutting(bool v);
-    bool matchGoalHeading() const { return params_.matchGoalHeading; }
-    /// A GoalState's heading must be matched (default false: any arrival heading).
+    /// A GoalState's heading must be matched: as set, else true on the car lattice (a goal pose
+    /// given with a yaw is reached with that yaw; for a free heading give a PositionGoal) and
+    /// false on the grid lattice (the papers' searches: any arrival heading).
+    bool matchGoalHeading() const;
     void setMatchGoalHeading(bool v);
     /// When true the start state's yaw is ignored (any first move costs no corner).
     bool freeStartHeading() const { return params_.freeStartHeading; }
@@ -139,13 +145,29 @@ public:
     /// gearChangeDistance()).
     double cuspPenalty() const;
     void setCuspPenalty(double m);
+    /// The car lattice's primitive set (`primitives`): `lattice` (nodes joined exactly, 8 or 16
+    /// headings), `hybrid` (Hybrid A*: continuous poses in 72 heading bins, short arcs; finer
+    /// manoeuvres in tight spots, many more expansions on long routes) or `auto` (default: the
+    /// lattice, then hybrid in the time left when the lattice does not reach the goal). See
+    /// CarLatticeConfig and CarFamily.
+    std::string primitives() const { return params_.primitives; }
+    void setPrimitives(const std::string &p);
+    /// `curve_heuristic`: the heuristic also takes the length of the shortest Reeds-Shepp
+    /// (reversing) or Dubins curve to a goal pose whose heading must be matched, within 30 R_min
+    /// (CurveBound, the obstacle-free non-holonomic bound of Hybrid A*). Off by default: on the
+    /// parking suite it saved 0-8 % of the expansions and cost 1.7-2.5 x the time
+    /// (docs/performance.md).
+    bool curveHeuristic() const { return params_.curveHeuristic; }
+    void setCurveHeuristic(bool on);
 
     /// True if the planner, as configured, searches the car lattice.
     virtual bool usesCarLattice() const { return false; }
     /// The car lattice in use after setup() (null on the grid lattice).
     const CarLatticeSearch *carSearch() const { return usesCarLattice() ? car_.search() : nullptr; }
-    /// The primitive set setup() gives the car lattice for this map and vehicle.
+    /// The primitive set setup() gives the car lattice for this map and vehicle (with
+    /// `primitives=auto`, the lattice's; carLatticeConfig(true) is its hybrid fallback).
     CarLatticeConfig carLatticeConfig() const;
+    CarLatticeConfig carLatticeConfig(bool hybrid) const;
 
 protected:
     /// The grid lattice's node type for this planner as configured (called by setup() when
@@ -175,7 +197,7 @@ protected:
     /// Parameters that act only on the car lattice: setup() refuses them on the grid lattice.
     virtual std::vector<std::string> carLatticeOnlyParams() const
     {
-        return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty"};
+        return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "primitives", "curve_heuristic"};
     }
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).

@@ -37,8 +37,11 @@ struct GridSetup
     /// then split them at their cusps.
     bool reversing() const { return kind == SpaceKind::ReedsShepp; }
 
-    /// Sets start and goal poses (world frame, yaw in radians) on the SimpleSetup.
-    void setStartAndGoal(const Pose2 &start, const Pose2 &goal) const;
+    /// Sets start and goal poses (world frame, yaw in radians) on the SimpleSetup: the goal as
+    /// a GoalState, or with @p freeGoalHeading as a PositionGoal at any heading (its position
+    /// within 1 micrometre; OMPL's planners sample it at the first of 72 yaws where the car
+    /// fits).
+    void setStartAndGoal(const Pose2 &start, const Pose2 &goal, bool freeGoalHeading = false) const;
 };
 
 /**

@@ -5,6 +5,7 @@
 
 #include "gridcar/core/Angles.h"
 #include "gridcar/core/Pose2.h"
+#include "gridcar/curves/CarCurves.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,24 +64,47 @@ struct TurnBound
     double operator()(const Pose2 &p) const { return perRad <= 0 ? 0.0 : perRad * angle(p); }
 };
 
-/// h = weight x max(Euclidean, obstacle) + weight x turn: the two position bounds bound the
+/// The obstacle-free non-holonomic bound of Hybrid A* planners: the length of the shortest
+/// Reeds-Shepp curve (a primitive set that reverses) or Dubins curve (forward only) from the pose
+/// to the goal pose at the primitives' turning radius, x the least cost per metre. Admissible for
+/// a goal heading that must be matched: every path of primitives is a curve of curvature at most
+/// 1 / radius from the pose to the goal pose, so it is no shorter than the shortest one, and
+/// reversed length and gear changes cost at least their length. Inactive (0) without a goal
+/// heading, or beyond @p within metres of the goal (where it is close to the straight line).
+struct CurveBound
+{
+    Pose2 goal;
+    double radius{0.0};  ///< 0: inactive
+    bool reverse{false};
+    double perMetre{1.0};
+    double within{0.0};
+    double operator()(const Pose2 &p) const
+    {
+        if (radius <= 0 || std::hypot(goal.x - p.x, goal.y - p.y) > within) return 0.0;
+        const CarCurve c = reverse ? reedsSheppCurve(p, goal, radius) : dubinsCurve(p, goal, radius);
+        return c.empty() ? 0.0 : perMetre * c.length;
+    }
+};
+
+/// h = weight x max(Euclidean, obstacle, curve) + weight x turn: the position bounds bound the
 /// same term (length-like cost) and combine by max; the turn bound bounds the turning term and
 /// adds. @p weight >= 1 inflates it (a bounded-suboptimal search).
 struct CarHeuristic
 {
     EuclideanBound euclidean;
     ObstacleBound obstacle;
+    CurveBound curve;
     TurnBound turn;
     bool useObstacle{true};
     double weight{1.0};
     /// The position part at node pose @p p with 2D distance @p graphDistance.
     double position(const Pose2 &p, double graphDistance) const
     {
-        if (!useObstacle) return weight * euclidean.perMetre * euclidean.distance(p);
+        if (!useObstacle) return weight * std::max(euclidean.perMetre * euclidean.distance(p), curve(p));
         const double e = euclidean(p);
         const double g = obstacle(graphDistance);
         if (g == std::numeric_limits<double>::infinity()) return g;
-        return weight * std::max(e, g);
+        return weight * std::max({e, g, curve(p)});
     }
     double turning(const Pose2 &p) const { return turn.perRad <= 0 ? 0.0 : weight * turn.perRad * turn.angle(p); }
 };

@@ -26,10 +26,16 @@ struct CarLatticeConfig
     /// Also the primitives driven backwards (each forward one mirrored: the body keeps its
     /// heading, the reference point moves the other way)
     bool reverse{false};
+    /// Hybrid A* primitives instead of the lattice's (Dolgov et al.; Nav2's Smac Hybrid-A*):
+    /// a state is a continuous pose binned into a square of `cell` metres and one of `headings`
+    /// equal heading bins (16 to 360), and every primitive is an arc (R_min, the further radii)
+    /// or a straight of one length, a whole number of bins of heading at R_min and at least 1.5
+    /// cells, so that manoeuvres far finer than a lattice node's can be made in a tight spot.
+    bool hybrid{false};
     bool operator==(const CarLatticeConfig &o) const
     {
         return cell == o.cell && headings == o.headings && turnRadius == o.turnRadius && extraRadii == o.extraRadii &&
-               reverse == o.reverse && spacing == o.spacing && reach == o.reach;
+               reverse == o.reverse && spacing == o.spacing && reach == o.reach && hybrid == o.hybrid;
     }
     bool operator!=(const CarLatticeConfig &o) const { return !(*this == o); }
 };
@@ -43,6 +49,8 @@ struct LatticePrimitive
     double turn{0.0};    ///< rad, signed heading change of the body (0 for a straight)
     double radius{0.0};  ///< m, radius of its arc (0 for a straight)
     bool reverse{false}; ///< driven backwards (the body at heading `from` .. `to` throughout)
+    /// Hybrid primitives (CarLatticeConfig::hybrid): samples in the body frame of the start pose
+    /// (start at the origin, yaw 0), di / dj / from / to unused.
     /// Poses along it, relative to the start node, spaced so that no body point moves more than
     /// the configured spacing between two of them; the start pose excluded, the end included.
     std::vector<Pose2> samples;
@@ -80,25 +88,31 @@ public:
     const CarLatticeConfig &config() const { return config_; }
     int headings() const { return config_.headings; }
     double cell() const { return config_.cell; }
-    /// Lattice vector of heading h (in cells) and its yaw in the lattice frame.
-    int vi(int h) const { return vec_[h][0]; }
-    int vj(int h) const { return vec_[h][1]; }
-    double yaw(int h) const { return yaw_[h]; }
-    /// The heading nearest to a lattice-frame yaw.
+    bool hybrid() const { return config_.hybrid; }
+    /// The yaw of heading h in the lattice frame (a hybrid lattice: its bin's centre).
+    double yaw(int h) const { return yaw_[std::size_t(h)]; }
+    /// The heading nearest to a lattice-frame yaw (a hybrid lattice: its bin).
     int nearestHeading(double yaw) const;
-    const std::vector<LatticePrimitive> &primitives(int h) const { return prims_[h]; }
+    /// The primitives from heading h (a hybrid lattice: the same body-frame set for every h).
+    const std::vector<LatticePrimitive> &primitives(int h) const { return prims_[config_.hybrid ? 0 : std::size_t(h)]; }
     double margin() const { return config_.spacing / 2; }
-    /// The neighbour steps of the 2D heuristic grid: the headings' lattice vectors.
-    int neighbourCount() const { return config_.headings; }
+    /// The neighbour steps of the 2D heuristic grid: the headings' lattice vectors (a hybrid
+    /// lattice: those of 16 headings), in cells, and their yaws.
+    int neighbourCount() const { return int(vec_.size()); }
+    int vi(int k) const { return vec_[std::size_t(k)][0]; }
+    int vj(int k) const { return vec_[std::size_t(k)][1]; }
+    double stepYaw(int k) const { return stepYaw_[std::size_t(k)]; }
 
 private:
     void addStraight(int h);
     bool addTurn(int h, int dir, double radius);
     void addReverse(int h);
+    void addHybrid();
     void sample(LatticePrimitive &p, double s1) const;
 
     CarLatticeConfig config_;
     std::vector<std::array<int, 2>> vec_;
+    std::vector<double> stepYaw_;
     std::vector<double> yaw_;
     std::vector<std::vector<LatticePrimitive>> prims_;
 };

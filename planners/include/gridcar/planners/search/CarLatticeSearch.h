@@ -73,6 +73,9 @@ struct CarLatticeQuery
     /// Cost (>= 0, the cost model's unit) of a gear change: between a state reached forwards
     /// and a motion backwards, or the other way, and at every cusp of the analytic expansion.
     double cuspPenalty{0.0};
+    /// Within this many metres of a goal whose heading must be matched, the heuristic also
+    /// takes the Reeds-Shepp (reversing) or Dubins length to the goal pose (CurveBound); 0: not.
+    double curveWithin{0.0};
 };
 
 /// What a search on the car lattice found.
@@ -130,6 +133,9 @@ public:
     double heuristicAt(int i, int j);
     /// World pose of lattice node (i, j) at heading h in the last run()'s frame.
     Pose2 nodePose(int i, int j, int h) const;
+    /// World pose of a state of the last run(): its node's, or on a hybrid lattice the
+    /// continuous pose it was reached at.
+    Pose2 statePose(std::uint32_t s) const { return toWorld(pose_[s]); }
     /// Calls fn(node, parent) for every state the last run() expanded (the start: parent = node).
     void forEachExpanded(const std::function<void(const Pose2 &, const Pose2 &)> &fn) const;
     /// True if the motion from @p from through the world poses @p poses is free: the
@@ -154,8 +160,14 @@ private:
     void setFrame(const CarLatticeQuery &q);
     bool fitsAtNode(int i, int j) const;
     bool tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions);
-    /// The primitive's samples from node (i, j) in world coordinates, into @p out.
-    void worldSamples(int i, int j, const LatticePrimitive &p, std::vector<Pose2> &out) const;
+    /// The primitive's samples from lattice-frame pose @p at (a node's, or a hybrid state's) in
+    /// world coordinates, into @p out.
+    void worldSamples(const Pose2 &at, const LatticePrimitive &p, std::vector<Pose2> &out) const;
+    /// A lattice-frame pose in world coordinates (yaw not wrapped).
+    Pose2 toWorld(const Pose2 &lat) const
+    {
+        return {ox_ + cphi_ * lat.x - sphi_ * lat.y, oy_ + sphi_ * lat.x + cphi_ * lat.y, phi_ + lat.yaw};
+    }
     std::vector<Pose2> buildPath(std::uint32_t end) const;
     double measureRatio() const;
 
@@ -172,6 +184,7 @@ private:
     StateInterner states_;  ///< lattice node key -> dense state id
     std::vector<std::int16_t> prim_;  ///< primitive that reached each state (-1: a start state)
     std::vector<std::int8_t> gear_;   ///< how each state was reached: 1 forwards, -1 backwards, 0 a start
+    std::vector<Pose2> pose_;         ///< each state's pose in the lattice frame (a node's, or a hybrid state's own)
     GrowingSearchSpace space_;
     std::uint32_t shotFrom_{SearchSpace::kNoParent};
     std::vector<Pose2> shot_;
