@@ -113,8 +113,12 @@ TEST(CarSpaces, CuspsSplitMetricsAndCostAStop)
     DrivingTimeParams rev;
     rev.reversing = true;
     const double tSplit = drivingTime(fwdBack, v, rev), tStraight = drivingTime(straight, v, rev);
+    // (the piece driven backwards at the reverse speed limit)
+    VehicleParams back = v;
+    back.maxSpeed = reverseSpeedLimit(v);
+    EXPECT_LT(back.maxSpeed, v.maxSpeed);
     EXPECT_NEAR(tSplit, drivingTime(std::vector<Pose2>(fwdBack.begin(), fwdBack.begin() + 101), v) +
-                            drivingTime(pieces[1].poses, v),
+                            drivingTime(pieces[1].poses, back),
                 1e-9);
     EXPECT_GT(tSplit, tStraight + 0.5);
     // a grid path's first step against a start yaw it ignores is no cusp

@@ -7,6 +7,7 @@
 #include "gridcar/vehicle/Dynamics.h"
 
 #include "collision/detail/FclShapes.h"
+#include "sim/TrackedPath.h"
 
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
@@ -30,57 +31,6 @@ inline std::unique_ptr<fcl::CollisionObjectd> fclObject(const MovingObstacle &o,
     return makeBox(x, y, o.sizeX, o.sizeY);
 }
 
-/// A path with its arc length, corners (sub-goals), velocity profile and clearance.
-struct TrackedPath
-{
-    std::vector<Pose2> pts;
-    std::vector<double> cum;      ///< arc length at each vertex
-    std::vector<double> cornerS;  ///< arc length of the corners that turn by more than 10 degrees
-    std::vector<double> clear;    ///< d_O - half width at each vertex (min with the previous one)
-    VelocityProfile profile;
-    double total{0.0};
-
-    TrackedPath(const std::vector<Pose2> &path, const FootprintChecker &checker)
-    {
-        for (const Pose2 &p : path)
-            if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
-        if (pts.size() < 2) return;
-        cum.push_back(0.0);
-        for (std::size_t i = 1; i < pts.size(); ++i)
-            cum.push_back(cum.back() + std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y));
-        total = cum.back();
-        const std::vector<Pose2> tp = turningPoints(pts);
-        std::size_t j = 0;
-        for (std::size_t i = 1; i + 1 < tp.size(); ++i)
-        {
-            const double h0 = std::atan2(tp[i].y - tp[i - 1].y, tp[i].x - tp[i - 1].x);
-            const double h1 = std::atan2(tp[i + 1].y - tp[i].y, tp[i + 1].x - tp[i].x);
-            while (j < pts.size() && (pts[j].x != tp[i].x || pts[j].y != tp[i].y)) ++j;
-            if (j < pts.size() && std::abs(wrapAngle(h1 - h0)) > 10.0 * M_PI / 180.0) cornerS.push_back(cum[j]);
-        }
-        const VehicleParams &veh = checker.vehicle();
-        profile = velocityProfile(pts, veh);
-        const DistanceField &field = checker.field();
-        for (std::size_t i = 0; i < pts.size(); ++i)
-        {
-            const double c = field.distance(pts[i].x, pts[i].y) - veh.width / 2;
-            clear.push_back(i ? std::min(c, field.distance(pts[i - 1].x, pts[i - 1].y) - veh.width / 2) : c);
-        }
-    }
-
-    void pointAt(double s, double &x, double &y) const
-    {
-        s = std::clamp(s, 0.0, total);
-        const std::size_t i =
-            std::min<std::size_t>(pts.size() - 1, std::size_t(std::upper_bound(cum.begin(), cum.end(), s) - cum.begin()));
-        const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? 1 : i;
-        const double len = cum[b] - cum[a];
-        const double f = len > 0 ? (s - cum[a]) / len : 0.0;
-        x = pts[a].x + f * (pts[b].x - pts[a].x);
-        y = pts[a].y + f * (pts[b].y - pts[a].y);
-    }
-};
-
 /// The follower's state between steps and the pieces of one step (see drivePath()).
 class Follower
 {
@@ -90,7 +40,7 @@ public:
     {
         halfWidth_ = veh_.width / 2;
         aLat_ = lateralAccelLimit(veh_);
-        creep_ = 0.1 * veh_.maxSpeed;
+        creep_ = std::min(0.1 * veh_.maxSpeed, 0.5);  // a crawl, not 3 m/s for a 30 m/s car (it must stop at a cusp)
         frontOffset_ = std::max(veh_.length - veh_.rearOverhang, 0.0);
         brakeRange_ = veh_.maxSpeed * veh_.maxSpeed / (2.0 * veh_.deceleration) + prm_.rho0 + 1.0;
     }
@@ -119,6 +69,10 @@ public:
     }
 
     double progress() const { return sProj_; }
+    /// The time the follower starts (a later piece of a path with cusps): progress is judged
+    /// from then on.
+    void startAt(double t) { markTime_ = t; }
+    std::size_t segment() const { return seg_; }
 
     /// Progress bookkeeping and recovery: when progress along the path stalls for stuckWindow
     /// seconds, a virtual obstacle where the vehicle is and a via-point further on; false (and
@@ -181,12 +135,17 @@ public:
         // the map's influence distance shrinks to what the path itself leaves (its clearance
         // here + 0.3 m): where the planner threads a narrow passage, full-range repulsion would
         // only push the vehicle off the path into a local minimum (paper C's known weakness)
-        const double rho0Static = std::clamp(path_.clear[std::min(seg_ + 1, path_.pts.size() - 1)] + 0.3, 0.3, prm_.rho0);
+        // (a path that threads a doorway has the doorway's clearance: at that distance no push)
+        const std::size_t at = std::min(seg_ + 1, path_.pts.size() - 1);
         rhoMin = kInf;
         const double off = veh_.centreOffset();
         const double frontOff = veh_.length - veh_.rearOverhang - halfWidth_;
         for (double o : {off, std::max(off, frontOff)})
         {
+            const double own = o == off ? path_.clearCentre[at] : path_.clearFront[at];
+            // (a path the car cannot follow exactly, a grid path's corners, keeps the margin)
+            const double rho0Static = path_.followable ? std::clamp(std::min(own, path_.clear[at] + 0.3), 0.05, prm_.rho0)
+                                                       : std::clamp(path_.clear[at] + 0.3, 0.3, prm_.rho0);
             const double px = st.x + o * std::cos(st.yaw), py = st.y + o * std::sin(st.yaw);
             auto push = [&](double rho, double gx, double gy, double r0) {
                 rho = std::max(rho, 0.05);

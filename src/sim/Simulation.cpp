@@ -3,9 +3,13 @@
 
 #include "sim/Follower.h"
 
+#include "gridcar/path/Cusps.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <stdexcept>
 
 namespace gridcar
 {
@@ -39,74 +43,184 @@ std::string DriveResult::outcomeName(Outcome o)
 }
 
 // ------------------------------------------------------------------ the follower
+namespace
+{
+/// A car driven backwards is, kinematically, a car driven forwards with its heading turned
+/// round, its steering negated and its overhangs swapped (the rear axle stays the reference
+/// point; the body covers the same ground): the follower drives reverse pieces that way.
+VehicleParams mirrored(const VehicleParams &v)
+{
+    VehicleParams m = v;
+    m.rearOverhang = v.length - v.rearOverhang;
+    m.maxSpeed = reverseSpeedLimit(v);
+    m.cornerSpeed45 = std::min(m.cornerSpeed45, m.maxSpeed);
+    m.cornerSpeed90 = std::min(m.cornerSpeed90, m.maxSpeed);
+    m.cornerSpeed135 = std::min(m.cornerSpeed135, m.maxSpeed);
+    m.name = v.name + " (reversing)";
+    return m;
+}
+
+VehicleState turnedRound(VehicleState s)
+{
+    s.yaw = wrapAngle(s.yaw + M_PI);
+    s.steer = -s.steer;
+    s.v = -s.v;
+    return s;
+}
+
+/// What the loop over a path's pieces shares.
+struct DriveRun
+{
+    const FootprintChecker &checker;
+    const Scenario &scenario;
+    const FollowerParams &prm;
+    double tol, tmax;
+    DriveResult &res;
+    double t{0.0}, ctSum{0.0};
+    std::size_t steps{0};
+
+    void record(const VehicleState &st, bool backward)
+    {
+        if (!prm.recordTrajectory) return;
+        const VehicleState s = backward ? turnedRound(st) : st;
+        res.trajectory.push_back({t, s.x, s.y, s.yaw, s.v, s.steer});
+    }
+
+    /// Drives one piece (forwards, on @p fc's vehicle) from @p st; true when its end is reached
+    /// (and, when @p stopThere, the vehicle stands still), false when the run ended (res says why).
+    bool piece(const detail::TrackedPath &path, const FootprintChecker &fc, VehicleState &st, bool backward, bool last)
+    {
+        const VehicleParams &veh = fc.vehicle();
+        detail::Follower follower(path, fc, scenario, prm);
+        follower.startAt(t);
+        for (;;)
+        {
+            const double crossTrack = follower.project(st);
+            ctSum += crossTrack;
+            res.crossTrackMax = std::max(res.crossTrackMax, crossTrack);
+            ++steps;
+            const Pose2 &end = path.pts.back();
+            if (std::hypot(st.x - end.x, st.y - end.y) <= tol && (follower.progress() >= path.total - 1e-3 || st.v <= 1e-3))
+            {
+                if (last) return true;
+                // a cusp: stand still before the gear changes
+                while (st.v > 1e-9)
+                {
+                    const VehicleState next = stepBicycle(st, veh, st.steer, 0.0, prm.dt);
+                    res.distanceDriven += std::hypot(next.x - st.x, next.y - st.y);
+                    st = next;
+                    t += prm.dt;
+                    record(st, backward);
+                    double clearance;
+                    if (!follower.bodyFree(st, t, res, clearance)) return false;
+                    res.minClearance = std::min(res.minClearance, clearance);
+                }
+                return true;
+            }
+            if (t >= tmax)
+            {
+                res.outcome = DriveResult::Outcome::Timeout;
+                res.reason = "time limit " + std::to_string(tmax) + " s reached";
+                return false;
+            }
+            if (!follower.recover(st, t, res)) return false;
+            const double L = prm.lookaheadMin + prm.lookaheadTime * st.v;
+            double fx, fy, rhoMin;
+            follower.force(st, t, L, fx, fy, rhoMin);
+            // on a path the car can drive (curvature within K_max): the via-point lies off
+            // the path's tangent by the bend between them, which a car on the path sees too, so
+            // only the rest is an error, and the path's own curvature steers forward (a car that
+            // waits for the error to build up cuts every bend); at a kink (a grid path's corner)
+            // paper C's rule alone: steer at the force
+            const double s = follower.progress();
+            const std::size_t sg = path.segmentAt(s), ahead = path.segmentAt(s + std::max(0.2, 0.3 * st.v));
+            double bend = 0.0, feedForward = 0.0;
+            if (path.followable)
+            {
+                double vx, vy, px, py;
+                follower.viaPoint(st, L, vx, vy);
+                path.pointAt(s, px, py);
+                if (std::hypot(vx - px, vy - py) > 1e-6) bend = wrapAngle(std::atan2(vy - py, vx - px) - path.heading[sg]);
+                feedForward = std::atan(veh.wheelbase * path.kappa[ahead]);
+            }
+            const double err = wrapAngle(std::atan2(fy, fx) - st.yaw - bend);
+            const double steerCmd = feedForward + prm.headingGain * err;
+            const double vCmd = follower.speedCommand(st, t, err, steerCmd, rhoMin, tol);
+            double steerUse, vUse;
+            follower.safeCommand(st, t, steerCmd, vCmd, steerUse, vUse);
+            const VehicleState next = stepBicycle(st, veh, steerUse, vUse, prm.dt);
+            res.distanceDriven += std::hypot(next.x - st.x, next.y - st.y);
+            st = next;
+            t += prm.dt;
+            record(st, backward);
+            double clearance;
+            if (!follower.bodyFree(st, t, res, clearance)) return false;
+            res.minClearance = std::min(res.minClearance, clearance);
+        }
+    }
+};
+}  // namespace
+
 DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &checker, const Scenario &scenario,
                       const FollowerParams &prm)
 {
     DriveResult res;
     const VehicleParams &veh = checker.vehicle();
-    const detail::TrackedPath path(pathIn, checker);
-    if (path.pts.size() < 2)
+    if (!(prm.dt > 0) || !(veh.maxSpeed > 0) || !(veh.acceleration > 0) || !(veh.deceleration > 0))
+        throw std::invalid_argument("drivePath needs dt > 0 and a vehicle with max_speed, acceleration, deceleration > 0");
+    // the pieces between cusps, each in its gear (a forward-only path is one piece)
+    std::vector<PathPiece> pieces;
+    for (PathPiece &p : splitAtCusps(pathIn))
+    {
+        double len = 0;
+        for (std::size_t i = 1; i < p.poses.size(); ++i)
+            len += std::hypot(p.poses[i].x - p.poses[i - 1].x, p.poses[i].y - p.poses[i - 1].y);
+        if (len > 1e-9) pieces.push_back(std::move(p));
+    }
+    if (pieces.empty())
     {
         res.outcome = DriveResult::Outcome::Reached;
         res.reason = "the path has no length";
         return res;
     }
-    if (!(prm.dt > 0) || !(veh.maxSpeed > 0) || !(veh.acceleration > 0) || !(veh.deceleration > 0))
-        throw std::invalid_argument("drivePath needs dt > 0 and a vehicle with max_speed, acceleration, deceleration > 0");
-    res.pathLength = path.total;
-    const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, checker.field().resolution());
-    const double tmax = prm.timeLimit > 0 ? prm.timeLimit : 60.0 + 5.0 * path.total / veh.maxSpeed;
-    detail::Follower follower(path, checker, scenario, prm);
-    VehicleState st;
-    st.x = path.pts.front().x;
-    st.y = path.pts.front().y;
-    st.yaw = std::atan2(path.pts[1].y - path.pts[0].y, path.pts[1].x - path.pts[0].x);
-    double t = 0.0, ctSum = 0.0;
-    std::size_t steps = 0;
-    res.minClearance = detail::kInf;
-    auto record = [&] {
-        if (prm.recordTrajectory) res.trajectory.push_back({t, st.x, st.y, st.yaw, st.v, st.steer});
-    };
-    record();
-    for (;;)
+    std::unique_ptr<FootprintChecker> reverseChecker;  // the mirrored vehicle, when a piece reverses
+    std::vector<std::unique_ptr<detail::TrackedPath>> tracked;
+    double budget = 0.0;
+    for (PathPiece &p : pieces)
     {
-        const double crossTrack = follower.project(st);
-        ctSum += crossTrack;
-        res.crossTrackMax = std::max(res.crossTrackMax, crossTrack);
-        ++steps;
-        const Pose2 &end = path.pts.back();
-        if (std::hypot(st.x - end.x, st.y - end.y) <= tol && (follower.progress() >= path.total - 1e-3 || st.v <= 1e-3))
-        {
-            res.outcome = DriveResult::Outcome::Reached;
-            res.reason = "reached the goal";
-            break;
-        }
-        if (t >= tmax)
-        {
-            res.outcome = DriveResult::Outcome::Timeout;
-            res.reason = "time limit " + std::to_string(tmax) + " s reached";
-            break;
-        }
-        if (!follower.recover(st, t, res)) break;
-        const double L = prm.lookaheadMin + prm.lookaheadTime * st.v;
-        double fx, fy, rhoMin;
-        follower.force(st, t, L, fx, fy, rhoMin);
-        const double err = wrapAngle(std::atan2(fy, fx) - st.yaw);
-        const double steerCmd = prm.headingGain * err;
-        const double vCmd = follower.speedCommand(st, t, err, steerCmd, rhoMin, tol);
-        double steerUse, vUse;
-        follower.safeCommand(st, t, steerCmd, vCmd, steerUse, vUse);
-        const VehicleState next = stepBicycle(st, veh, steerUse, vUse, prm.dt);
-        res.distanceDriven += std::hypot(next.x - st.x, next.y - st.y);
-        st = next;
-        t += prm.dt;
-        record();
-        double clearance;
-        if (!follower.bodyFree(st, t, res, clearance)) break;
-        res.minClearance = std::min(res.minClearance, clearance);
+        if (p.backward && !reverseChecker)
+            reverseChecker = std::make_unique<FootprintChecker>(checker.gridPtr(), checker.fieldPtr(), mirrored(veh));
+        const FootprintChecker &fc = p.backward ? *reverseChecker : checker;
+        if (p.backward)
+            for (Pose2 &q : p.poses) q.yaw = wrapAngle(q.yaw + M_PI);
+        tracked.push_back(std::make_unique<detail::TrackedPath>(p.poses, fc));
+        res.pathLength += tracked.back()->total;
+        budget += 10.0 + 5.0 * tracked.back()->total / fc.vehicle().maxSpeed;
     }
-    res.drivingTime = t;
-    res.crossTrackMean = steps ? ctSum / double(steps) : 0.0;
+    const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, checker.field().resolution());
+    DriveRun run{checker, scenario, prm, tol, prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget, res};
+    res.minClearance = detail::kInf;
+    VehicleState st;
+    st.x = pieces.front().poses.front().x;
+    st.y = pieces.front().poses.front().y;
+    const auto &p0 = tracked.front()->pts;
+    st.yaw = std::atan2(p0[1].y - p0[0].y, p0[1].x - p0[0].x);  // turned round already for a reverse piece
+    run.record(st, pieces.front().backward);
+    bool ok = true;
+    for (std::size_t k = 0; k < pieces.size() && ok; ++k)
+    {
+        if (k > 0 && pieces[k].backward != pieces[k - 1].backward) st = turnedRound(st);
+        const FootprintChecker &fc = pieces[k].backward ? *reverseChecker : checker;
+        ok = run.piece(*tracked[k], fc, st, pieces[k].backward, k + 1 == pieces.size());
+    }
+    if (ok)
+    {
+        res.outcome = DriveResult::Outcome::Reached;
+        res.reason = "reached the goal";
+    }
+    if (pieces.back().backward) st = turnedRound(st);
+    res.drivingTime = run.t;
+    res.crossTrackMean = run.steps ? run.ctSum / double(run.steps) : 0.0;
     if (!std::isfinite(res.minClearance)) res.minClearance = checker.clearance(st.x, st.y, st.yaw);
     return res;
 }

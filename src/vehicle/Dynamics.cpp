@@ -89,6 +89,12 @@ double VelocityProfile::speedAt(double at) const
     return v[i - 1] + t * (v[i] - v[i - 1]);
 }
 
+double reverseSpeedLimit(const VehicleParams &v)
+{
+    if (v.maxReverseSpeed > 0) return std::min(v.maxReverseSpeed, v.maxSpeed);
+    return std::min(v.maxSpeed / 3.0, 2.0);
+}
+
 double drivingTime(const std::vector<Pose2> &path, const VehicleParams &v, const DrivingTimeParams &p)
 {
     if (!p.reversing) return velocityProfile(path, v, p).time;
@@ -96,7 +102,9 @@ double drivingTime(const std::vector<Pose2> &path, const VehicleParams &v, const
     one.reversing = false;
     one.stopAtEnds = true;  // the car stops at every cusp
     double t = 0.0;
-    for (const PathPiece &piece : splitAtCusps(path)) t += velocityProfile(piece.poses, v, one).time;
+    VehicleParams back = v;  // a piece driven backwards: at most the reverse speed limit
+    back.maxSpeed = reverseSpeedLimit(v);
+    for (const PathPiece &piece : splitAtCusps(path)) t += velocityProfile(piece.poses, piece.backward ? back : v, one).time;
     return t;
 }
 

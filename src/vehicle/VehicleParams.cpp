@@ -49,6 +49,7 @@ void VehicleParams::validate() const
     if (maxSteerDeg >= 90.0) throw std::invalid_argument("vehicle max_steer_deg must be below 90");
     check(maxSteerRateDeg, "max_steer_rate_deg", true);
     check(maxSpeed, "max_speed", true);
+    check(maxReverseSpeed, "max_reverse_speed", false);
     check(acceleration, "acceleration", true);
     check(deceleration, "deceleration", true);
     check(maxLateralAccel, "max_lateral_accel", true);
@@ -142,7 +143,7 @@ VehicleParams VehicleParams::scaled(double k) const
     VehicleParams v = *this;
     for (double *len : {&v.length, &v.width, &v.wheelbase, &v.rearOverhang})
         *len *= k;
-    for (double *rate : {&v.maxSpeed, &v.acceleration, &v.deceleration, &v.maxLateralAccel, &v.cornerSpeed45,
+    for (double *rate : {&v.maxSpeed, &v.maxReverseSpeed, &v.acceleration, &v.deceleration, &v.maxLateralAccel, &v.cornerSpeed45,
                          &v.cornerSpeed90, &v.cornerSpeed135})
         *rate *= k;
     std::ostringstream name;
@@ -188,6 +189,7 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
                   {"max_steer_deg", &v.maxSteerDeg},
                   {"max_steer_rate_deg", &v.maxSteerRateDeg},
                   {"max_speed", &v.maxSpeed},
+                  {"max_reverse_speed", &v.maxReverseSpeed},
                   {"acceleration", &v.acceleration},
                   {"deceleration", &v.deceleration},
                   {"max_lateral_accel", &v.maxLateralAccel},

@@ -46,7 +46,7 @@ struct Scenario
 struct VehicleState
 {
     double x{0}, y{0}, yaw{0};
-    double v{0};      ///< m/s (>= 0: the follower drives forwards only)
+    double v{0};      ///< m/s (negative driving backwards)
     double steer{0};  ///< front-wheel angle, rad
 };
 

@@ -35,6 +35,10 @@ double cornerDistanceLost(const VehicleParams &v, double cornerSpeed);
 /// min(v_max, sqrt(lateralAccelLimit() R_min)), where a car reverses and changes gear.
 double manoeuvringSpeed(const VehicleParams &v);
 
+/// Speed limit driving backwards (m/s): VehicleParams::maxReverseSpeed when set (at most v_max),
+/// else v_max / 3 and at most 2 m/s (a car backs out or into a slot at walking pace).
+double reverseSpeedLimit(const VehicleParams &v);
+
 /// Distance (m) a gear change costs: the manoeuvring speed v_m x the time lost stopping from it
 /// and starting again, v_m^2 / 2 x (1/a + 1/d) (cornerDistanceLost() at v_m down to 0). The
 /// default cusp penalty of the car lattice.
@@ -50,7 +54,8 @@ struct DrivingTimeParams
     double sampleStep{0.25};  ///< m between profile samples
     double window{2.0};       ///< m, chord before / after a sample for its heading change
     bool stopAtEnds{true};    ///< start from rest and stop at the goal
-    /// A Reeds-Shepp path: a stop at each cusp (splitAtCusps()), each piece from rest to rest.
+    /// A path that reverses: a stop at each cusp (splitAtCusps()), each piece from rest to rest,
+    /// a piece driven backwards within reverseSpeedLimit().
     bool reversing{false};
 };
 

@@ -25,6 +25,8 @@ struct VehicleParams
     double maxSteerDeg{35.0};      ///< deg, maximum front-wheel steering angle phi_max
     double maxSteerRateDeg{60.0};  ///< deg/s
     double maxSpeed{10.0};         ///< m/s
+    /// m/s, speed limit driving backwards; 0 = the default of reverseSpeedLimit() (Dynamics.h)
+    double maxReverseSpeed{0.0};
     double acceleration{2.0};      ///< m/s^2
     double deceleration{3.0};      ///< m/s^2 (positive number)
     double maxLateralAccel{2.0};   ///< m/s^2, sets cornering speed v = sqrt(a_lat r)
