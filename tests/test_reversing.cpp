@@ -2,7 +2,10 @@
 // `cusp_penalty`, forward-only on a Dubins space, paths that back out drivably.
 #include "PlannerTestUtil.h"
 
+#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/map/ParkingScenes.h"
 #include "gridcar/path/Drivability.h"
+#include "gridcar/sim/Simulation.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/planners/CornerAStar.h"
 #include "gridcar/planners/GridPlanner.h"
@@ -14,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 using namespace gridcar;
 namespace ob = ompl::base;
@@ -132,4 +136,104 @@ TEST(Reversing, PenaltiesAndWhereTheyAct)
     auto grid = makePlanner(s.ss->getSpaceInformation(), "corner-astar-grid");
     grid->params().setParam("reverse", "on");
     EXPECT_THROW(grid->setup(), std::invalid_argument);
+}
+
+namespace
+{
+/// The parking scene named @p scene for @p vehicle, with a set-up on it.
+GridSetup parkingSetup(const std::string &vehicle, const std::string &scene, ParkingQuery &query, const std::string &name)
+{
+    const VehicleParams v = VehicleParams::preset(vehicle);
+    for (const ParkingScene &s : parkingScenes(v))
+        if (s.name == scene)
+            for (const ParkingQuery &q : s.queries)
+                if (q.name == name)
+                {
+                    query = q;
+                    return makeGridSetup(std::make_shared<const OccupancyGrid>(s.grid), v);
+                }
+    throw std::logic_error("no parking query " + name);
+}
+}  // namespace
+
+// Out of a parallel slot the lattice's nodes cannot manoeuvre (every primitive longer than the
+// gap allows): primitives=lattice ends approximate; the default (auto) falls back to the hybrid
+// primitive set and leaves exactly at the goal pose, drivable, in a few manoeuvres.
+TEST(Reversing, TheHybridFallbackLeavesAParallelSlot)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    ParkingQuery q;
+    GridSetup s = parkingSetup("paper-c-car", "parallel", q, "parallel/leave");
+    for (const char *prims : {"lattice", "auto"})
+    {
+        SCOPED_TRACE(prims);
+        auto p = makePlanner(s.ss->getSpaceInformation(), "corner-astar");
+        p->params().setParam("reverse", "on");
+        p->params().setParam("primitives", prims);
+        const QueryResult r = runQuery(s, p, q.start, q.goal, 5.0);
+        if (std::string(prims) == "lattice")
+        {
+            EXPECT_NE(r.status, ob::PlannerStatus::EXACT_SOLUTION);
+            continue;
+        }
+        ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
+        EXPECT_TRUE(r.drivability.drivable) << r.drivability.reason;
+        EXPECT_GE(r.metrics.cusps, 1);
+        EXPECT_NEAR(r.path.back().x, q.goal.x, 1e-6);
+        EXPECT_NEAR(r.path.back().y, q.goal.y, 1e-6);
+        EXPECT_NEAR(wrapAngle(r.path.back().yaw - q.goal.yaw), 0.0, 1e-6);
+    }
+}
+
+// A goal pose given with a yaw is reached with that yaw by default on the car lattice (backing
+// into a slot ends nose-out, not nose-in); match_goal_heading=0 relaxes it; a free-heading goal
+// (PositionGoal) arrives at any heading.
+TEST(Reversing, AGoalYawIsReachedByDefault)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    ParkingQuery q;
+    GridSetup s = parkingSetup("paper-c-car", "perpendicular", q, "perpendicular/back-in");
+    auto p = makePlanner(s.ss->getSpaceInformation(), "improved-astar");
+    p->params().setParam("reverse", "on");
+    const QueryResult r = runQuery(s, p, q.start, q.goal, 5.0);
+    ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_NEAR(wrapAngle(r.path.back().yaw - q.goal.yaw), 0.0, 1e-6);
+    EXPECT_TRUE(r.drivability.drivable) << r.drivability.reason;
+    auto grid = makePlanner(s.ss->getSpaceInformation(), "corner-astar-grid");
+    EXPECT_EQ(grid->params()["match_goal_heading"].getValue(), "0");  // the papers' grid searches: any heading
+    EXPECT_EQ(p->params()["match_goal_heading"].getValue(), "1");
+    const QueryResult free = runQuery(s, p, q.start, q.goal, 5.0, /*freeGoalHeading=*/true);
+    ASSERT_EQ(free.status, ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_NEAR(free.path.back().x, q.goal.x, 1e-6);
+}
+
+// The simulation drives a path with cusps piece by piece, each in its gear: backwards with the
+// speed negative and at most the reverse speed limit, standing still at the cusp, to the goal.
+TEST(Reversing, TheSimulationDrivesEachPieceInItsGear)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    GridSetup s;
+    std::vector<Pose2> path;
+    ASSERT_EQ(planOut("corner-astar", "on", SpaceKind::SE2, path, s), ob::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_GT(backwardPoses(path), 0);
+    const DriveResult d = drivePath(path, *s.checker, Scenario());
+    EXPECT_EQ(d.outcome, DriveResult::Outcome::Reached) << d.reason;
+    const double vRev = reverseSpeedLimit(s.checker->vehicle());
+    EXPECT_LT(vRev, s.checker->vehicle().maxSpeed / 2);
+    double slowest = 0;
+    for (const TrajectorySample &t : d.trajectory)
+    {
+        slowest = std::min(slowest, t.v);
+        EXPECT_GE(t.v, -vRev - 1e-9);
+    }
+    EXPECT_LT(slowest, -0.5 * vRev) << "never drove backwards";
+    EXPECT_NEAR(d.trajectory.back().x, path.back().x, 0.3);
+    EXPECT_NEAR(d.trajectory.back().y, path.back().y, 0.3);
+    // the limit from the vehicle: max_reverse_speed when set (at most v_max), else v_max / 3, <= 2 m/s
+    VehicleParams v = VehicleParams::preset("paper-c-car");
+    EXPECT_DOUBLE_EQ(reverseSpeedLimit(v), 2.0);
+    v.maxReverseSpeed = 1.2;
+    EXPECT_DOUBLE_EQ(reverseSpeedLimit(v), 1.2);
+    v.maxReverseSpeed = -1;
+    EXPECT_THROW(v.validate(), std::invalid_argument);
 }
