@@ -194,7 +194,7 @@ void printRuns(const std::vector<Run> &runs)
 
 std::string fileStem(const std::string &vehicle, const std::string &query, const std::string &planner)
 {
-    std::string file = vehicle + "-" + query + "-" + planner;
+    std::string file = vehicle + "-" + query + (planner.empty() ? "" : "-" + planner);
     std::replace_if(file.begin(), file.end(), [](char ch) { return ch == '/' || ch == ' ' || ch == '='; }, '-');
     return file;
 }
@@ -256,7 +256,6 @@ void omplOnQuery(const Options &o, const std::string &vname, GridSetup &rs, cons
     for (const std::string &name : kOmpl)
         for (int k = 0; k < o.omplRuns; ++k)
         {
-            ompl::RNG::setSeed(o.seed + unsigned(k));
             auto planner = configurePlanner(rs.ss->getSpaceInformation(), {name, {}, false, false});
             const QueryResult r = runQuery(rs, planner, q.start, q.goal, o.omplSeconds);
             Run run{q.name, name};
@@ -351,9 +350,9 @@ int main(int argc, char **argv)
     app.add_option("--scene", o.scenes, "scenes to run: perpendicular, parallel, dead-end, lot (default: all)");
     app.add_option("--time-limit", o.limit, "solve() limit of gridcar's planners per query, s")->capture_default_str();
     app.add_option("--ompl-seconds", o.omplSeconds, "time per run of each OMPL planner, s (0: skip them)")->capture_default_str();
-    app.add_option("--ompl-runs", o.omplRuns, "runs of each OMPL planner per query (seeds --seed, --seed + 1, ...)")
+    app.add_option("--ompl-runs", o.omplRuns, "runs of each OMPL planner per query (one seeded random stream, --seed)")
         ->capture_default_str();
-    app.add_option("--seed", o.seed, "OMPL's random seed of the first run")->capture_default_str();
+    app.add_option("--seed", o.seed, "OMPL's random seed")->capture_default_str();
     app.add_option("--param", o.params, "NAME=VALUE set on every gridcar planner (repeatable)");
     app.add_option("--failed-dir", o.dumpDir, "write the poses of every path that fails the check, and the path and simulated trajectory of every drive that does not arrive, here as CSV");
     app.add_option("--png-dir", o.pngDir, "write a picture of each query's corner-astar path here (an existing directory)");
@@ -361,6 +360,8 @@ int main(int argc, char **argv)
     app.add_flag("--verbose", verbose, "show OMPL's and the planners' messages (warnings and errors are hidden otherwise)");
     CLI11_PARSE(app, argc, argv);
     if (verbose) ompl::msg::setLogLevel(ompl::msg::LOG_INFO);
+    // OMPL takes one seed, before its first random number: the runs follow one seeded stream
+    ompl::RNG::setSeed(o.seed);
     try
     {
         if (!o.pngDir.empty() && !std::filesystem::is_directory(o.pngDir))

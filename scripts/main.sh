@@ -16,3 +16,8 @@ bash scripts/build.sh
   --report-note "Every planner on Reeds-Shepp curves at the car's minimum turning radius, the footprint checked along every motion. The plain SE(2) race (straight motions, not drivable by construction) is the labelled reference in [se2-reference/report.md](se2-reference/report.md)." "$@"
 ./build/gridcar bench benchmarks/problems/campus.yaml --out gridcar-out/se2-reference \
   --report-note "Reference only: plain SE(2) space, OMPL's straight motions let the car slide sideways; the fair race on Reeds-Shepp curves is [../report.md](../report.md)." "$@"
+# the parking suite (generated scenes, both cars, reversing): gridcar's planners and OMPL's on
+# the Reeds-Shepp space at 2 s per run; pictures of corner-astar's paths beside the report
+mkdir -p gridcar-out/parking
+./build/benchmarks/bench_parking --ompl-seconds 2 --png-dir gridcar-out/parking > gridcar-out/parking/report.md
+echo "[gridcar] parking suite: gridcar-out/parking/report.md"

@@ -105,16 +105,7 @@ struct DriveRun
                 if (last) return true;
                 // a cusp: stand still before the gear changes
                 while (st.v > 1e-9)
-                {
-                    const VehicleState next = stepBicycle(st, veh, st.steer, 0.0, prm.dt);
-                    res.distanceDriven += std::hypot(next.x - st.x, next.y - st.y);
-                    st = next;
-                    t += prm.dt;
-                    record(st, backward);
-                    double clearance;
-                    if (!follower.bodyFree(st, t, res, clearance)) return false;
-                    res.minClearance = std::min(res.minClearance, clearance);
-                }
+                    if (!step(follower, veh, st, st.steer, 0.0, backward)) return false;
                 return true;
             }
             if (t >= tmax)
@@ -148,15 +139,24 @@ struct DriveRun
             const double vCmd = follower.speedCommand(st, t, err, steerCmd, rhoMin, tol);
             double steerUse, vUse;
             follower.safeCommand(st, t, steerCmd, vCmd, steerUse, vUse);
-            const VehicleState next = stepBicycle(st, veh, steerUse, vUse, prm.dt);
-            res.distanceDriven += std::hypot(next.x - st.x, next.y - st.y);
-            st = next;
-            t += prm.dt;
-            record(st, backward);
-            double clearance;
-            if (!follower.bodyFree(st, t, res, clearance)) return false;
-            res.minClearance = std::min(res.minClearance, clearance);
+            if (!step(follower, veh, st, steerUse, vUse, backward)) return false;
         }
+    }
+
+    /// One simulated step with these commands, recorded and checked: false when the body hit
+    /// something (res says what).
+    bool step(const detail::Follower &follower, const VehicleParams &veh, VehicleState &st, double steer, double speed,
+              bool backward)
+    {
+        const VehicleState next = stepBicycle(st, veh, steer, speed, prm.dt);
+        res.distanceDriven += std::hypot(next.x - st.x, next.y - st.y);
+        st = next;
+        t += prm.dt;
+        record(st, backward);
+        double clearance;
+        if (!follower.bodyFree(st, t, res, clearance)) return false;
+        res.minClearance = std::min(res.minClearance, clearance);
+        return true;
     }
 };
 }  // namespace
