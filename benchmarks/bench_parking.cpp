@@ -307,7 +307,7 @@ void printComparison(const std::vector<Run> &ours, const std::vector<Run> &ompls
                 cusps.push_back(x->check.cusps);
             }
         std::printf("| %s | %.2f | %.1f | %s | %.2f | %.3f | %d |\n", r.query.c_str(), best, quantile(cusps, 0.5), r.planner.c_str(),
-                    r.check.length, r.exact && r.check.ok ? r.check.length / best : NAN, r.check.cusps);
+                    r.check.length, r.exact && r.check.ok && std::isfinite(best) ? r.check.length / best : NAN, r.check.cusps);
     }
 }
 
