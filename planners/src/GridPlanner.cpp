@@ -7,7 +7,6 @@
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/PlannerData.h>
-#include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/util/Console.h>
 
 #include <algorithm>
@@ -79,7 +78,7 @@ void GridPlanner::setup()
     tooBig_.clear();
     if (usesCarLattice())
     {
-        if (params_.reverse == "on" && dynamic_cast<const ompl::base::DubinsStateSpace *>(si_->getStateSpace().get()))
+        if (params_.reverse == "on" && onDubinsSpace())
             throw std::invalid_argument(getName() + ": reverse=on on a Dubins space, which drives forwards only (use "
                                                     "reverse=auto or the Reeds-Shepp space)");
         if (params_.primitives == "auto")

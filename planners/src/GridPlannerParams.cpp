@@ -70,11 +70,15 @@ void GridPlanner::setCuspPenalty(double m)
     parameterSet("cusp_penalty");
 }
 
+bool GridPlanner::onDubinsSpace() const
+{
+    return dynamic_cast<const ompl::base::DubinsStateSpace *>(si_->getStateSpace().get()) != nullptr;
+}
+
 bool GridPlanner::reversing() const
 {
     if (params_.reverse == "off") return false;
-    const bool dubins = dynamic_cast<const ompl::base::DubinsStateSpace *>(si_->getStateSpace().get()) != nullptr;
-    return !(dubins && params_.reverse == "auto");
+    return !(onDubinsSpace() && params_.reverse == "auto");
 }
 
 double GridPlanner::cuspPenalty() const

@@ -72,7 +72,6 @@ public:
     /// The time the follower starts (a later piece of a path with cusps): progress is judged
     /// from then on.
     void startAt(double t) { markTime_ = t; }
-    std::size_t segment() const { return seg_; }
 
     /// Progress bookkeeping and recovery: when progress along the path stalls for stuckWindow
     /// seconds, a virtual obstacle where the vehicle is and a via-point further on; false (and
@@ -132,10 +131,9 @@ public:
             fx *= fmax / fa;
             fy *= fmax / fa;
         }
-        // the map's influence distance shrinks to what the path itself leaves (its clearance
-        // here + 0.3 m): where the planner threads a narrow passage, full-range repulsion would
+        // the map's influence distance shrinks to what the path itself leaves (its clearance at
+        // the body point): where the planner threads a narrow passage, full-range repulsion would
         // only push the vehicle off the path into a local minimum (paper C's known weakness)
-        // (a path that threads a doorway has the doorway's clearance: at that distance no push)
         const std::size_t at = std::min(seg_ + 1, path_.pts.size() - 1);
         rhoMin = kInf;
         const double off = veh_.centreOffset();

@@ -71,7 +71,6 @@ VehicleState turnedRound(VehicleState s)
 /// What the loop over a path's pieces shares.
 struct DriveRun
 {
-    const FootprintChecker &checker;
     const Scenario &scenario;
     const FollowerParams &prm;
     double tol, tmax;
@@ -87,7 +86,8 @@ struct DriveRun
     }
 
     /// Drives one piece (forwards, on @p fc's vehicle) from @p st; true when its end is reached
-    /// (and, when @p stopThere, the vehicle stands still), false when the run ended (res says why).
+    /// (and, unless it is the @p last, the vehicle stands still), false when the run ended (res
+    /// says why).
     bool piece(const detail::TrackedPath &path, const FootprintChecker &fc, VehicleState &st, bool backward, bool last)
     {
         const VehicleParams &veh = fc.vehicle();
@@ -198,7 +198,7 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         budget += 10.0 + 5.0 * tracked.back()->total / fc.vehicle().maxSpeed;
     }
     const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, checker.field().resolution());
-    DriveRun run{checker, scenario, prm, tol, prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget, res};
+    DriveRun run{scenario, prm, tol, prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget, res};
     res.minClearance = detail::kInf;
     VehicleState st;
     st.x = pieces.front().poses.front().x;

@@ -26,14 +26,7 @@ struct CarExpander
     std::uint64_t expansions{0};
     std::vector<Pose2> samples;  ///< reused for every primitive
 
-    Pose2 poseOf(std::uint32_t s) const { return world(S.pose_[s]); }
-    /// A lattice-frame pose in the world, yaw wrapped (as nodePose()).
-    Pose2 world(const Pose2 &lat) const
-    {
-        Pose2 p = S.toWorld(lat);
-        p.yaw = wrapYaw(p.yaw);
-        return p;
-    }
+    Pose2 poseOf(std::uint32_t s) const { return S.statePose(s); }
     CarHeuristic bounds;  ///< the lower bounds (search/CarHeuristics.h); all zero when not aiming
 
     CarExpander(CarLatticeSearch &search, const LatticeCostModel &c) : S(search), cost(c)
@@ -62,7 +55,7 @@ struct CarExpander
     double hAt(const Pose2 &lat, int i, int j) const
     {
         if (!S.query_.aim) return 0.0;
-        const Pose2 p = world(lat);
+        const Pose2 p = S.worldPose(lat);
         const double hp = bounds.position(p, S.use2d_ ? S.h2d_->distance(i, j) : -1.0);
         return hp == kInf ? hp : hp + bounds.turning(p);
     }
@@ -83,7 +76,7 @@ struct CarExpander
     {
         const auto k = S.unpack(S.states_.key(s));
         const Pose2 at = S.pose_[s];  // a copy: intern() below may grow pose_
-        const Pose2 from = world(at);
+        const Pose2 from = S.worldPose(at);
         const auto &prims = S.lattice_->primitives(k.h);
         const bool hybrid = S.lattice_->hybrid();
         const double c = S.lattice_->cell(), ca = std::cos(at.yaw), sa = std::sin(at.yaw);
@@ -137,7 +130,6 @@ std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
     for (std::uint32_t s = end; s != SearchSpace::kNoParent; s = space_.parent(s)) chain.push_back(s);
     std::reverse(chain.begin(), chain.end());
     Pose2 start = statePose(chain.front());
-    start.yaw = wrapYaw(start.yaw);
     start.x = query_.start.x;
     start.y = query_.start.y;
     std::vector<Pose2> path{start};
@@ -248,14 +240,9 @@ void CarLatticeSearch::forEachExpanded(const std::function<void(const Pose2 &, c
 {
     space_.forEach([&](std::uint32_t s, bool closed) {
         if (!closed) return;
-        auto wrapped = [this](std::uint32_t t) {
-            Pose2 q = statePose(t);
-            q.yaw = wrapYaw(q.yaw);
-            return q;
-        };
-        const Pose2 node = wrapped(s);
+        const Pose2 node = statePose(s);
         const std::uint32_t p = space_.parent(s);
-        fn(node, p == SearchSpace::kNoParent ? node : wrapped(p));
+        fn(node, p == SearchSpace::kNoParent ? node : statePose(p));
     });
 }
 

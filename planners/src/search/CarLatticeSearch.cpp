@@ -189,8 +189,7 @@ void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
 bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)
 {
     const auto k = unpack(states_.key(s));
-    Pose2 from = statePose(s);
-    from.yaw = wrapYaw(from.yaw);
+    const Pose2 from = statePose(s);
     const Pose2 &g = query_.goal;
     const double e = std::hypot(g.x - from.x, g.y - from.y);
     const double R = lattice_->config().turnRadius, c = lattice_->cell();

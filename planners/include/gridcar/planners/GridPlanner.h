@@ -136,6 +136,8 @@ public:
     void setReverse(const std::string &r);
     /// True if the car lattice drives backwards as configured (after setup()).
     bool reversing() const;
+    /// True on OMPL's Dubins space (forward only: `reverse=on` refused, `auto` off).
+    bool onDubinsSpace() const;
     /// Factor on the cost of motion driven backwards (`reverse_penalty`, >= 1; default 2, as
     /// Nav2's Smac planners).
     double reversePenalty() const { return params_.reversePenalty; }

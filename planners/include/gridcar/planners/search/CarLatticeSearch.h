@@ -4,6 +4,7 @@
 /// checks of every primitive, the obstacle-aware heuristic, an analytic Dubins shot to the exact
 /// goal, and a pluggable cost model (improved A*'s and corner A*'s costs on the same successors).
 
+#include "gridcar/core/Angles.h"
 #include "gridcar/planners/search/AStar.h"
 #include "gridcar/planners/search/CarCollision.h"
 #include "gridcar/planners/search/CarLattice.h"
@@ -133,9 +134,9 @@ public:
     double heuristicAt(int i, int j);
     /// World pose of lattice node (i, j) at heading h in the last run()'s frame.
     Pose2 nodePose(int i, int j, int h) const;
-    /// World pose of a state of the last run(): its node's, or on a hybrid lattice the
-    /// continuous pose it was reached at.
-    Pose2 statePose(std::uint32_t s) const { return toWorld(pose_[s]); }
+    /// World pose of a state of the last run() (yaw wrapped): its node's, or on a hybrid lattice
+    /// the continuous pose it was reached at.
+    Pose2 statePose(std::uint32_t s) const { return worldPose(pose_[s]); }
     /// Calls fn(node, parent) for every state the last run() expanded (the start: parent = node).
     void forEachExpanded(const std::function<void(const Pose2 &, const Pose2 &)> &fn) const;
     /// True if the motion from @p from through the world poses @p poses is free: the
@@ -167,6 +168,13 @@ private:
     Pose2 toWorld(const Pose2 &lat) const
     {
         return {ox_ + cphi_ * lat.x - sphi_ * lat.y, oy_ + sphi_ * lat.x + cphi_ * lat.y, phi_ + lat.yaw};
+    }
+    /// The same with the yaw wrapped (as nodePose()).
+    Pose2 worldPose(const Pose2 &lat) const
+    {
+        Pose2 p = toWorld(lat);
+        p.yaw = wrapYaw(p.yaw);
+        return p;
     }
     std::vector<Pose2> buildPath(std::uint32_t end) const;
     double measureRatio() const;
