@@ -65,9 +65,16 @@ struct TrackedPath
             const double h = heading[i];
             const double cc = field.distance(pts[i].x + off * std::cos(h), pts[i].y + off * std::sin(h)) - veh.width / 2;
             const double cf = field.distance(pts[i].x + front * std::cos(h), pts[i].y + front * std::sin(h)) - veh.width / 2;
-            clearCentre.push_back(i ? std::min(cc, clearCentre.back()) : cc);
-            clearFront.push_back(i ? std::min(cf, clearFront.back()) : cf);
-            if (i > 0) clearCentre[i - 1] = std::min(clearCentre[i - 1], cc), clearFront[i - 1] = std::min(clearFront[i - 1], cf);
+            clearCentre.push_back(cc);
+            clearFront.push_back(cf);
+        }
+        // each vertex's value the smaller of its own and the previous vertex's (as `clear`), not
+        // a running minimum: past the path's tightest point the repulsion is measured again
+        // against what the path leaves there
+        for (std::size_t i = pts.size() - 1; i > 0; --i)
+        {
+            clearCentre[i] = std::min(clearCentre[i], clearCentre[i - 1]);
+            clearFront[i] = std::min(clearFront[i], clearFront[i - 1]);
         }
         // curvature over a window of about 0.3 m each side (a lattice path's arcs are sampled
         // every few centimetres; the window smooths the rounding of single samples)
