@@ -48,6 +48,7 @@ struct Check
     bool ok{false};
     std::string why;
     double length{0}, goalMetres{0}, goalDeg{0};
+    double rate{0};  ///< fastest curvature change, 1/m^2 (checkDrivable)
     int cusps{0};
 };
 
@@ -78,6 +79,7 @@ Check checkPath(const std::vector<Pose2> &path, const Pose2 &start, const Pose2 
     DrivabilityOptions o;
     o.reversing = true;
     const Drivability d = checkDrivable(path, fc, o);
+    c.rate = d.maxCurvatureRate;
     if (!d.drivable)
     {
         c.why = d.reason;
@@ -184,12 +186,12 @@ void picture(const std::string &file, const OccupancyGrid &grid, const VehiclePa
 
 void printRuns(const std::vector<Run> &runs)
 {
-    std::printf("| query | planner | status | independent check | length (m) | cusps | solve() (ms) | simulation |\n");
-    std::printf("|---|---|---|---|---|---|---|---|\n");
+    std::printf("| query | planner | status | independent check | length (m) | cusps | curvature rate (1/m^2) | solve() (ms) | simulation |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|\n");
     for (const Run &r : runs)
-        std::printf("| %s | %s | %s | %s | %.2f | %d | %.1f | %s |\n", r.query.c_str(), r.planner.c_str(),
+        std::printf("| %s | %s | %s | %s | %.2f | %d | %.3g | %.1f | %s |\n", r.query.c_str(), r.planner.c_str(),
                     r.exact ? "exact" : "not exact", r.check.ok ? "passed" : r.check.why.c_str(), r.check.length, r.check.cusps,
-                    1e3 * r.seconds, r.sim.c_str());
+                    r.check.rate, 1e3 * r.seconds, r.sim.c_str());
 }
 
 std::string fileStem(const std::string &vehicle, const std::string &query, const std::string &planner)

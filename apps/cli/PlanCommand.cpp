@@ -37,6 +37,9 @@ nlohmann::json resultJson(const QueryResult &q, const VehicleParams &vehicle)
     j["min_clearance"] = m.minClearance;
     j["min_path_distance"] = m.minPathDistance;
     j["max_curvature"] = m.maxCurvature;
+    j["max_curvature_rate"] = q.drivability.maxCurvatureRate;
+    j["curvature_rate_limit"] = vehicle.curvatureRateLimit();
+    j["within_curvature_rate"] = q.drivability.maxCurvatureRate <= 1.02 * vehicle.curvatureRateLimit();
     j["cusps"] = m.cusps;
     j["time"] = q.seconds;
     j["smoothing_time"] = q.smoothingSeconds;
@@ -68,8 +71,8 @@ void printResult(const std::string &planner, const QueryResult &q)
     if (m.cusps) std::printf(", %d cusp(s)", m.cusps);
     if (q.expanded) std::printf(", %llu nodes expanded", (unsigned long long)q.expanded);
     if (!q.path.empty())
-        std::printf("\n  %s", q.drivability.drivable ? "drivable: body free at 2 cm steps, curvature within K_max"
-                                                      : ("NOT drivable: " + q.drivability.reason).c_str());
+        std::printf("\n  %s; curvature rate up to %.3g 1/m^2", q.drivability.drivable ? "drivable: body free at 2 cm steps, curvature within K_max"
+                                                      : ("NOT drivable: " + q.drivability.reason).c_str(), q.drivability.maxCurvatureRate);
     if (q.smoothed && q.adjustFailures + q.bezierFallbacks > 0)
         std::printf("\n  smoothing: %d corner(s) still above K_max, %d Bezier piece(s) collided and were kept sharp",
                     q.adjustFailures, q.bezierFallbacks);

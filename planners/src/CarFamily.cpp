@@ -56,6 +56,7 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     }
     FamilyRun run;
     const auto t0 = std::chrono::steady_clock::now();
+    lastSmoothing_ = {};
     CarLatticeResult r = search_->run(q, cost, cancelled, progress);
     last_ = search_.get();
     if (fallback_ && !r.exact && r.outcome != SearchOutcome::Cancelled && !cancelled())
@@ -72,6 +73,7 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         else
             r.expanded = h.expanded;
     }
+    if (r.exact && options.curvatureRate > 0 && r.path.size() > 2) smooth(options, r.path, cancelled);
     run.searchSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.expanded = r.expanded;
     run.cost = r.cost;
@@ -82,6 +84,25 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     run.end.noPathWhy = "the vehicle fits at no lattice heading at the start";
     if (!r.path.empty()) run.end.path = std::make_shared<ompl::geometric::PathGeometric>(toPath(si, r.path));
     return run;
+}
+
+void CarFamily::smooth(const CarSearchOptions &options, std::vector<Pose2> &path, const std::function<bool()> &cancelled)
+{
+    // poses no farther apart than lets a body point move the lattice's spacing, so that the
+    // search's own swept-motion test certifies each replacement
+    const CarLatticeConfig &cfg = last_->lattice().config();
+    CurvatureSmoothingOptions o;
+    o.maxCurvature = options.maxCurvature;
+    o.maxCurvatureRate = options.curvatureRate;
+    o.step = cfg.spacing / (1.0 + cfg.reach * options.maxCurvature);
+    o.reversing = true;
+    o.cancelled = cancelled;
+    o.free = [this](const std::vector<Pose2> &poses) {
+        return last_->curveFree(poses[0], int(poses.size()) - 1, [&poses](int i) { return poses[std::size_t(i)]; });
+    };
+    CurvatureSmoothing s = smoothCurvature(path, o);
+    lastSmoothing_ = {s.stretches, s.replaced, s.maxRate};
+    if (!s.cancelled) path = std::move(s.path);
 }
 
 void CarFamily::plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const

@@ -25,6 +25,32 @@ void GridPlanner::declareCarLatticeParams()
     declareParam<double>("cusp_penalty", this, &GridPlanner::setCuspPenalty, &GridPlanner::cuspPenalty, "0.:1.:100.");
     declareParam<bool>("curve_heuristic", this, &GridPlanner::setCurveHeuristic, &GridPlanner::curveHeuristic, "0,1");
     declareParam<std::string>("primitives", this, &GridPlanner::setPrimitives, &GridPlanner::primitives, "auto,lattice,hybrid");
+    declareParam<bool>("continuous_curvature", this, &GridPlanner::setContinuousCurvature, &GridPlanner::continuousCurvature,
+                       "0,1");
+    declareParam<double>("curvature_rate", this, &GridPlanner::setCurvatureRate, &GridPlanner::curvatureRateParam,
+                         "0.:0.05:100.");
+}
+
+void GridPlanner::setContinuousCurvature(bool on)
+{
+    params_.continuousCurvature = on;
+    parameterSet("continuous_curvature");
+}
+
+void GridPlanner::setCurvatureRate(double rate)
+{
+    if (!std::isfinite(rate) || rate < 0.0 || rate > 1e4)
+        throw std::invalid_argument(getName() + ": curvature_rate must be in [0, 10000] 1/m^2 (0: the vehicle's)");
+    params_.curvatureRate = rate;
+    parameterSet("curvature_rate");
+}
+
+double GridPlanner::curvatureRate() const
+{
+    if (!params_.continuousCurvature) return 0.0;
+    if (params_.curvatureRate > 0) return params_.curvatureRate;
+    const double r = vehicle().curvatureRateLimit();
+    return std::isfinite(r) ? r : 0.0;
 }
 
 bool GridPlanner::matchGoalHeading() const

@@ -1,6 +1,7 @@
 #include "gridcar/path/Drivability.h"
 
 #include "gridcar/core/Angles.h"
+#include "gridcar/path/ContinuousCurvature.h"
 #include "gridcar/path/Cusps.h"
 
 #include <algorithm>
@@ -49,6 +50,12 @@ bool checkPiece(const std::vector<Pose2> &pts, bool backward, double s0, const F
         d.maxCurvature = std::max(d.maxCurvature, theta / (0.5 * (l0 + l1)));
         if (std::isfinite(kmax) && theta > 1e-9)
             worstDeviation = std::max(worstDeviation, theta >= M_PI - 1e-9 ? HUGE_VAL : (1.0 / std::cos(theta / 2) - 1.0) / kmax);
+    }
+    const CurvatureProfile prof = curvatureRateProfile(pts, s0);
+    if (prof.maxRate > d.maxCurvatureRate)
+    {
+        d.maxCurvatureRate = prof.maxRate;
+        d.maxCurvatureRateAt = prof.maxRateAt;
     }
     return true;
 }
@@ -103,6 +110,13 @@ Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker
     else if (std::isfinite(kmax) && !(d.maxCurvature <= kmax * (1.0 + options.curvatureTolerance)))
     {
         std::snprintf(buf, sizeof buf, "curvature %.3g 1/m exceeds K_max %.3g 1/m", d.maxCurvature, kmax);
+        d.reason = buf;
+    }
+    else if (options.maxCurvatureRate > 0 &&
+             !(d.maxCurvatureRate <= options.maxCurvatureRate * (1.02 + options.curvatureTolerance)))
+    {
+        std::snprintf(buf, sizeof buf, "curvature changes at %.3g 1/m^2 %.2f m along the path, faster than %.3g 1/m^2",
+                      d.maxCurvatureRate, d.maxCurvatureRateAt, options.maxCurvatureRate);
         d.reason = buf;
     }
     else if (worstDeviation > step)

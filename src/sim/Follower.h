@@ -61,6 +61,8 @@ public:
             {
                 best = d;
                 bestS = path_.cum[i] + f * std::sqrt(len2);
+                // left of the path (seen along it) positive
+                lateral_ = (bx - ax) * (st.y - ay) - (by - ay) * (st.x - ax) >= 0 ? d : -d;
             }
         }
         sProj_ = std::max(sProj_, bestS);
@@ -69,6 +71,8 @@ public:
     }
 
     double progress() const { return sProj_; }
+    /// Signed distance of the vehicle from the path at the last projection (left positive).
+    double lateral() const { return lateral_; }
     /// The time the follower starts (a later piece of a path with cusps): progress is judged
     /// from then on.
     void startAt(double t) { markTime_ = t; }
@@ -106,7 +110,10 @@ public:
     /// vehicle is within L / 2 of it.
     void viaPoint(const VehicleState &st, double L, double &vx, double &vy) const
     {
-        double viaS = std::min(path_.total, sProj_ + L + viaBoost_);
+        // past the end of a path the car can follow, the via-point runs on along the end's
+        // heading: aimed at the end point itself, the last metres would be driven at the point
+        // (the heading off by the path's last bend, at a cusp the next piece's start off too)
+        double viaS = path_.followable ? sProj_ + L + viaBoost_ : std::min(path_.total, sProj_ + L + viaBoost_);
         for (double cs : path_.cornerS)
             if (cs > sProj_ && cs < viaS)
             {
@@ -115,7 +122,12 @@ public:
                 if (std::hypot(cx - st.x, cy - st.y) > L / 2) viaS = cs;
                 break;
             }
-        path_.pointAt(viaS, vx, vy);
+        path_.pointAt(std::min(viaS, path_.total), vx, vy);
+        if (viaS > path_.total)
+        {
+            vx += (viaS - path_.total) * std::cos(path_.heading.back());
+            vy += (viaS - path_.total) * std::sin(path_.heading.back());
+        }
     }
 
     /// Attraction to the via-point (saturated) plus repulsion at the body's centre and front;
@@ -309,7 +321,7 @@ private:
     const Scenario &scenario_;
     const FollowerParams &prm_;
     double halfWidth_, aLat_, creep_, frontOffset_, brakeRange_;
-    double sProj_{0.0}, progressMark_{0.0}, markTime_{0.0}, viaBoost_{0.0};
+    double sProj_{0.0}, progressMark_{0.0}, markTime_{0.0}, viaBoost_{0.0}, lateral_{0.0};
     std::size_t seg_{0};
     std::vector<std::pair<double, double>> virtualObstacles_;
 };

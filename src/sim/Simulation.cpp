@@ -92,6 +92,18 @@ struct DriveRun
     {
         const VehicleParams &veh = fc.vehicle();
         detail::Follower follower(path, fc, scenario, prm);
+        // a piece ending at a cusp ends where the next one starts: much closer than the goal
+        // tolerance, or the next piece starts off its path with no steering reserve
+        const double tolHere = last ? tol : std::min(tol, 0.1);
+        // from rest, the wheels are turned to the path's curvature before the car moves (a
+        // car steers at a standstill; starting to roll with the wheels on the last piece's lock
+        // puts it off a path that may be at full lock from its first metre)
+        if (path.followable && std::abs(st.v) < 1e-9)
+        {
+            const double want = std::atan(veh.wheelbase * path.kappa.front());
+            for (int k = 0; k < int(3.0 / prm.dt) && std::abs(st.steer - want) > 1e-3; ++k)
+                if (!step(follower, veh, st, want, 0.0, backward)) return false;
+        }
         follower.startAt(t);
         for (;;)
         {
@@ -100,7 +112,10 @@ struct DriveRun
             res.crossTrackMax = std::max(res.crossTrackMax, crossTrack);
             ++steps;
             const Pose2 &end = path.pts.back();
-            if (std::hypot(st.x - end.x, st.y - end.y) <= tol && (follower.progress() >= path.total - 1e-3 || st.v <= 1e-3))
+            const double toEnd = std::hypot(st.x - end.x, st.y - end.y);
+            // a cusp: within 0.1 m, or within the goal tolerance once stopped at the end
+            if ((toEnd <= tolHere && (follower.progress() >= path.total - 1e-3 || st.v <= 1e-3)) ||
+                (toEnd <= tol && follower.progress() >= path.total - 1e-3 && st.v <= 1e-3))
             {
                 if (last) return true;
                 // a cusp: stand still before the gear changes
@@ -125,7 +140,7 @@ struct DriveRun
             // paper C's rule alone: steer at the force
             const double s = follower.progress();
             const std::size_t sg = path.segmentAt(s), ahead = path.segmentAt(s + std::max(0.2, 0.3 * st.v));
-            double bend = 0.0, feedForward = 0.0;
+            double bend = 0.0, feedForward = 0.0, crossTerm = 0.0;
             if (path.followable)
             {
                 double vx, vy, px, py;
@@ -133,10 +148,13 @@ struct DriveRun
                 path.pointAt(s, px, py);
                 if (std::hypot(vx - px, vy - py) > 1e-6) bend = wrapAngle(std::atan2(vy - py, vx - px) - path.heading[sg]);
                 feedForward = std::atan(veh.wheelbase * path.kappa[ahead]);
+                // the cross-track error steered back directly (Stanley's term): the via-point
+                // alone sees a lateral offset only as a small angle at a long look-ahead
+                crossTerm = -std::atan(prm.crossTrackGain * follower.lateral() / (std::abs(st.v) + 0.5));
             }
             const double err = wrapAngle(std::atan2(fy, fx) - st.yaw - bend);
-            const double steerCmd = feedForward + prm.headingGain * err;
-            const double vCmd = follower.speedCommand(st, t, err, steerCmd, rhoMin, tol);
+            const double steerCmd = feedForward + prm.headingGain * err + crossTerm;
+            const double vCmd = follower.speedCommand(st, t, err, steerCmd, rhoMin, tolHere);
             double steerUse, vUse;
             follower.safeCommand(st, t, steerCmd, vCmd, steerUse, vUse);
             if (!step(follower, veh, st, steerUse, vUse, backward)) return false;

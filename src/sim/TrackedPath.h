@@ -87,11 +87,48 @@ struct TrackedPath
             if (b <= a || cum[b] - cum[a] < 1e-6) continue;
             kappa[i] = wrapAngle(heading[b == pts.size() - 1 ? b - 1 : b] - heading[a]) / (cum[b] - cum[a]);
         }
+        capForSteering(veh);
         // followable: the turning-angle curvature at every vertex (the drivable check's test)
         for (std::size_t i = 1; i + 1 < pts.size() && followable; ++i)
         {
             const double ds = 0.5 * (cum[i + 1] - cum[i - 1]);
             if (ds > 0 && std::abs(wrapAngle(heading[i] - heading[i - 1])) / ds > 1.05 * veh.maxCurvature()) followable = false;
+        }
+    }
+
+    /// The steering wheel turns at most maxSteerRateDeg: where the path's curvature changes by
+    /// dk/ds the front wheels must turn at v x L / (1 + (L k)^2) x dk/ds, so the profile is
+    /// capped at the speed where they keep up (curvature over the 0.6 m window above, so a jump
+    /// between two samples reads as a change over 0.6 m), then accelerated and braked again.
+    void capForSteering(const VehicleParams &veh)
+    {
+        if (profile.v.size() < 3 || pts.size() < 3) return;
+        const double rate = veh.maxSteerRateDeg * M_PI / 180.0, L = veh.wheelbase;
+        bool capped = false;
+        for (std::size_t k = 0; k < profile.v.size(); ++k)
+        {
+            const std::size_t i = segmentAt(profile.s[k]);
+            const std::size_t a = segmentAt(profile.s[k] - 0.15), b = std::min(segmentAt(profile.s[k] + 0.15) + 1, pts.size() - 1);
+            if (b <= a || cum[b] - cum[a] < 1e-6) continue;
+            const double dk = std::abs(kappa[b] - kappa[a]) / (cum[b] - cum[a]);
+            const double lk = L * kappa[i];
+            const double dSteer = L / (1.0 + lk * lk) * dk;  // rad of wheel angle per metre
+            if (dSteer > 1e-9 && rate / dSteer < profile.v[k])
+            {
+                profile.v[k] = rate / dSteer;
+                capped = true;
+            }
+        }
+        if (!capped) return;
+        for (std::size_t k = 1; k < profile.v.size(); ++k)
+        {
+            const double ds = profile.s[k] - profile.s[k - 1];
+            profile.v[k] = std::min(profile.v[k], std::sqrt(profile.v[k - 1] * profile.v[k - 1] + 2 * veh.acceleration * ds));
+        }
+        for (std::size_t k = profile.v.size() - 1; k-- > 0;)
+        {
+            const double ds = profile.s[k + 1] - profile.s[k];
+            profile.v[k] = std::min(profile.v[k], std::sqrt(profile.v[k + 1] * profile.v[k + 1] + 2 * veh.deceleration * ds));
         }
     }
 

@@ -48,6 +48,7 @@ void VehicleParams::validate() const
     check(maxSteerDeg, "max_steer_deg", true);
     if (maxSteerDeg >= 90.0) throw std::invalid_argument("vehicle max_steer_deg must be below 90");
     check(maxSteerRateDeg, "max_steer_rate_deg", true);
+    check(maxCurvatureRate, "max_curvature_rate", false);
     check(maxSpeed, "max_speed", true);
     check(maxReverseSpeed, "max_reverse_speed", false);
     check(acceleration, "acceleration", true);
@@ -58,6 +59,15 @@ void VehicleParams::validate() const
     check(cornerSpeed90, "corner_speed_90", false);
     check(cornerSpeed135, "corner_speed_135", false);
     if (length > 1000.0 || width > 1000.0) throw std::invalid_argument("vehicle larger than 1 km is absurd");
+}
+
+double VehicleParams::curvatureRateLimit() const
+{
+    if (isPoint()) return HUGE_VAL;
+    if (maxCurvatureRate > 0) return maxCurvatureRate;
+    const double aLat = std::min(friction * 9.81, maxLateralAccel);
+    const double v = std::sqrt(aLat * minTurningRadius());
+    return (maxSteerRateDeg * M_PI / 180.0 / wheelbase) / std::max(v, 1e-3);
 }
 
 std::vector<std::string> VehicleParams::presetNames() { return {"paper-i", "paper-c-car", "paper-c-robot", "point"}; }
@@ -79,6 +89,7 @@ VehicleParams VehicleParams::preset(const std::string &name)
         v.acceleration = 1.0;
         v.deceleration = 1.5;
         v.maxLateralAccel = 1.5;
+        v.maxCurvatureRate = 0.4;  // curvatureRateLimit(): 60 deg/s / 1.56 m at 1.67 m/s
     }
     else if (name == "paper-c-car")
     {
@@ -97,6 +108,7 @@ VehicleParams VehicleParams::preset(const std::string &name)
         v.cornerSpeed45 = 10.0;
         v.cornerSpeed90 = 6.0;
         v.cornerSpeed135 = 4.0;
+        v.maxCurvatureRate = 0.13;  // curvatureRateLimit(): 60 deg/s / 2.7 m at 3.04 m/s
     }
     else if (name == "paper-c-robot")
     {
@@ -114,6 +126,7 @@ VehicleParams VehicleParams::preset(const std::string &name)
         v.cornerSpeed45 = 0.3;
         v.cornerSpeed90 = 0.2;
         v.cornerSpeed135 = 0.15;
+        v.maxCurvatureRate = 16.0;  // curvatureRateLimit(): 60 deg/s / 0.32 m at 0.2 m/s
     }
     else if (name == "point")
     {
@@ -146,6 +159,7 @@ VehicleParams VehicleParams::scaled(double k) const
     for (double *rate : {&v.maxSpeed, &v.maxReverseSpeed, &v.acceleration, &v.deceleration, &v.maxLateralAccel, &v.cornerSpeed45,
                          &v.cornerSpeed90, &v.cornerSpeed135})
         *rate *= k;
+    v.maxCurvatureRate /= k * k;  // 1/m^2
     std::ostringstream name;
     name << this->name << " x " << k;
     v.name = name.str();
@@ -188,6 +202,7 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
                   {"rear_overhang", &v.rearOverhang},
                   {"max_steer_deg", &v.maxSteerDeg},
                   {"max_steer_rate_deg", &v.maxSteerRateDeg},
+                  {"max_curvature_rate", &v.maxCurvatureRate},
                   {"max_speed", &v.maxSpeed},
                   {"max_reverse_speed", &v.maxReverseSpeed},
                   {"acceleration", &v.acceleration},

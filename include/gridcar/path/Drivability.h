@@ -19,6 +19,10 @@ struct DrivabilityOptions
     /// A Reeds-Shepp path: split at its cusps (splitAtCusps()), a piece driven backwards
     /// checked with the body turned round, the reversal itself no curvature.
     bool reversing{false};
+    /// 1/m^2: when positive, the curvature may change along each piece no faster than this
+    /// (curvatureRateProfile(), with curvatureTolerance and a 2 % slack for sampling) — a
+    /// steering wheel turns at a finite rate; 0: the rate is measured, not required.
+    double maxCurvatureRate{0.0};
     /// Polled every 64 poses (a planner's termination condition): when it returns true the
     /// check stops with drivable = false and the reason that it was not finished.
     std::function<bool()> cancelled;
@@ -30,6 +34,10 @@ struct Drivability
     bool drivable{false};
     std::string reason;          ///< why not (empty when drivable)
     double maxCurvature{0.0};    ///< 1/m, largest turning-angle curvature at a vertex
+    /// 1/m^2, fastest change of that curvature between neighbouring vertices within a piece
+    /// (a jump between two samples shows as |dk| / spacing)
+    double maxCurvatureRate{0.0};
+    double maxCurvatureRateAt{-1.0};  ///< m of arc length where it is
     double firstCollision{-1.0}; ///< m of arc length where the body first hits something (-1: none)
     int posesChecked{0};
 };

@@ -68,6 +68,9 @@ struct FollowerParams
     double lookaheadMin{2.0};   ///< m, via-point distance along the path at standstill
     double lookaheadTime{1.0};  ///< s, plus this many seconds of travel
     double headingGain{2.0};    ///< steering command = gain x heading error (rad / rad)
+    /// On a path within K_max: steering also gets -atan(gain x cross-track error / (|v| + 0.5 m/s))
+    /// (1/s; Stanley's term), so a lateral offset is steered back at any look-ahead. 0: off
+    double crossTrackGain{1.0};
     double goalTolerance{0.0};  ///< m; 0 = max(0.3 m, a cell)
     double stuckWindow{6.0};    ///< s without progress along the path before a recovery
     int maxRecoveries{3};       ///< recoveries before the run is declared stuck

@@ -24,6 +24,9 @@ struct VehicleParams
     double rearOverhang{0.9};      ///< m, rear bumper to rear axle (the reference point)
     double maxSteerDeg{35.0};      ///< deg, maximum front-wheel steering angle phi_max
     double maxSteerRateDeg{60.0};  ///< deg/s
+    /// 1/m^2: how fast a path's curvature may change along it (`max_curvature_rate`); 0 = from
+    /// the steering rate, curvatureRateLimit()
+    double maxCurvatureRate{0.0};
     double maxSpeed{10.0};         ///< m/s
     /// m/s, speed limit driving backwards; 0 = the default of reverseSpeedLimit() (Dynamics.h)
     double maxReverseSpeed{0.0};
@@ -48,6 +51,14 @@ struct VehicleParams
     double circumscribedRadius() const;
     /// Radius of the largest circle around the centre inside the rectangle.
     double inscribedRadius() const;
+    /**
+     * @brief sigma (1/m^2), the curvature rate the planners keep to: maxCurvatureRate when set,
+     * else the rate the steering (maxSteerRateDeg, at the wheels' straight-ahead
+     * sensitivity 1 / wheelbase) reaches at the speed of a turn at R_min,
+     * sigma = (steer rate / wheelbase) / sqrt(a_lat R_min), so a transition from straight to full
+     * lock takes K_max / sigma metres. Infinite for a point.
+     */
+    double curvatureRateLimit() const;
 
     /// Throws std::invalid_argument naming the first field that is negative, NaN or inconsistent.
     void validate() const;

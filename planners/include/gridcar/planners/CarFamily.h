@@ -6,6 +6,7 @@
 #include "gridcar/planners/GoalAdapter.h"
 #include "gridcar/planners/GridFamily.h"
 #include "gridcar/planners/SolverSupport.h"
+#include "gridcar/path/ContinuousCurvature.h"
 #include "gridcar/planners/search/CarLatticeSearch.h"
 
 #include <ompl/base/PlannerData.h>
@@ -23,6 +24,10 @@ struct CarSearchOptions
     double reversePenalty{1.0};  ///< factor on reversed cost, >= 1
     double cuspPenalty{0.0};     ///< cost of a gear change
     double curveWithin{0.0};     ///< m: the Reeds-Shepp / Dubins bound within this of the goal (0: off)
+    /// Continuous curvature: a found path's curvature jumps replaced (smoothCurvature()) so
+    /// that curvature changes no faster than this (1/m^2; 0: the path as searched)
+    double curvatureRate{0.0};
+    double maxCurvature{0.0};    ///< K_max (1/m) the replacements keep
 };
 
 /**
@@ -52,7 +57,18 @@ public:
     /// The explored graph of the last search.
     void plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const;
 
+    /// What the continuous-curvature step did to the last query's path.
+    struct Smoothing
+    {
+        int stretches{0};    ///< curvature jumps faster than the rate
+        int replaced{0};     ///< of them, replaced
+        double maxRate{0.0}; ///< 1/m^2 left in the path
+    };
+    const Smoothing &lastSmoothing() const { return lastSmoothing_; }
+
 private:
+    void smooth(const CarSearchOptions &options, std::vector<Pose2> &path, const std::function<bool()> &cancelled);
+    Smoothing lastSmoothing_;
     std::shared_ptr<CarCollision> collision_;
     std::unique_ptr<CarLatticeSearch> search_, fallback_;
     const CarLatticeSearch *last_{nullptr};

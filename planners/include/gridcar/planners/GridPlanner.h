@@ -40,6 +40,10 @@ struct GridPlannerParams
     double cuspPenalty{0.0};         ///< `cusp_penalty` (car lattice), m; used when set, else from the vehicle
     bool curveHeuristic{false};      ///< `curve_heuristic` (car lattice): max in the Reeds-Shepp / Dubins length to the goal pose
     std::string primitives{"auto"};  ///< `primitives` (car lattice): auto, lattice, or hybrid (Hybrid A*'s binned poses)
+    /// `continuous_curvature` (car lattice): the found path's curvature jumps replaced by G2
+    /// quintics within `curvature_rate` (smoothCurvature())
+    bool continuousCurvature{true};
+    double curvatureRate{0.0};       ///< `curvature_rate` (car lattice), 1/m^2; 0 = the vehicle's
 };
 
 /**
@@ -161,6 +165,13 @@ public:
     /// (docs/performance.md).
     bool curveHeuristic() const { return params_.curveHeuristic; }
     void setCurveHeuristic(bool on);
+    bool continuousCurvature() const { return params_.continuousCurvature; }
+    void setContinuousCurvature(bool on);
+    /// The `curvature_rate` parameter as set (0: the vehicle's, curvatureRateLimit()).
+    double curvatureRateParam() const { return params_.curvatureRate; }
+    void setCurvatureRate(double rate);
+    /// The curvature rate the car lattice's paths keep (1/m^2; 0: not smoothed).
+    double curvatureRate() const;
 
     /// True if the planner, as configured, searches the car lattice.
     virtual bool usesCarLattice() const { return false; }
@@ -199,7 +210,8 @@ protected:
     /// Parameters that act only on the car lattice: setup() refuses them on the grid lattice.
     virtual std::vector<std::string> carLatticeOnlyParams() const
     {
-        return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "primitives", "curve_heuristic"};
+        return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "primitives", "curve_heuristic",
+                "continuous_curvature", "curvature_rate"};
     }
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).
