@@ -135,7 +135,9 @@ Command addPlanCommand(CLI::App &app)
     auto *c = app.add_subcommand("plan", "Plan one path on a map with a grid planner or an OMPL planner");
     addQueryOptions(c, o->query, true);
     c->add_flag("--json", o->json,
-                "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, cusps, "
+                "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, "
+                "max_curvature_rate (1/m^2, fastest change of curvature), curvature_rate_limit (the vehicle's), "
+                "within_curvature_rate, cusps, "
                 "min_path_distance, smoothing_time, min_clearance, time, drivable (and not_drivable_because), not_exact_because "
                 "(a grid planner stopped at its memory bound), "
                 "path [[x, y, yaw_rad], ...]");

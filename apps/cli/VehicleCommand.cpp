@@ -56,6 +56,8 @@ int runVehicle(const VehicleOptions &o)
         j["friction"] = v.friction;
         j["max_curvature"] = v.isPoint() ? nlohmann::json(nullptr) : nlohmann::json(v.maxCurvature());
         j["min_turning_radius"] = v.minTurningRadius();
+        j["max_steer_rate_deg"] = v.maxSteerRateDeg;
+        j["max_curvature_rate"] = v.isPoint() ? nlohmann::json(nullptr) : nlohmann::json(v.curvatureRateLimit());
         j["corner_speeds"] = {vc.v45, vc.v90, vc.v135};
         j["physics_weights"] = {physics.w45, physics.w90, physics.w135};
         j["paper_weights"] = {paper.w45, paper.w90, paper.w135};
