@@ -13,6 +13,8 @@
 #include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -71,6 +73,13 @@ public:
     }
 
     double progress() const { return sProj_; }
+    /// "(x, y), s m of L m along the path" for messages.
+    std::string where(const VehicleState &st) const
+    {
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "(%.2f, %.2f), %.2f m of %.2f m along the path", st.x, st.y, sProj_, path_.total);
+        return buf;
+    }
     /// Signed distance of the vehicle from the path at the last projection (left positive).
     double lateral() const { return lateral_; }
     /// The time the follower starts (a later piece of a path with cusps): progress is judged
@@ -94,7 +103,8 @@ public:
             {
                 res.outcome = DriveResult::Outcome::Stuck;
                 res.reason = "no progress along the path for " + std::to_string(int(prm_.stuckWindow)) + " s after " +
-                             std::to_string(res.recoveries) + " recoveries (local minimum or oscillation)";
+                             std::to_string(res.recoveries) + " recoveries, at " + where(st) + ": " +
+                             (limit_.empty() ? std::string("a local minimum or oscillation of the potential field") : limit_);
                 return false;
             }
             ++res.recoveries;
@@ -209,9 +219,28 @@ public:
         const double freeStatic = freeAhead(st, t, freeMoving);
         const double margin = 0.1 + st.v * prm_.dt;
         const double crawl = std::min(0.2 * veh_.maxSpeed, 0.5);
-        vCmd = std::min(vCmd, std::max(std::sqrt(2.0 * veh_.deceleration * std::max(freeStatic - margin, 0.0)), crawl));
-        vCmd = std::min(vCmd, std::sqrt(2.0 * veh_.deceleration * std::max(freeMoving - margin, 0.0)));
-        return vCmd;
+        const double vStatic = std::max(std::sqrt(2.0 * veh_.deceleration * std::max(freeStatic - margin, 0.0)), crawl);
+        const double vMoving = std::sqrt(2.0 * veh_.deceleration * std::max(freeMoving - margin, 0.0));
+        char buf[160];
+        if (vMoving < vCmd && vMoving <= vStatic)
+        {
+            std::snprintf(buf, sizeof buf, "a moving obstacle %.2f m ahead in the lane (the stopping-distance rule)", freeMoving);
+            limit_ = buf;
+        }
+        else if (vStatic < vCmd)
+        {
+            std::snprintf(buf, sizeof buf, "the map or a virtual obstacle %.2f m ahead in the lane (the stopping-distance rule)",
+                          freeStatic);
+            limit_ = buf;
+        }
+        else if (rhoMin < prm_.rho0 && rhoMin < 0.2)
+        {
+            std::snprintf(buf, sizeof buf, "the repulsion of an obstacle %.2f m from the body (the potential field)", rhoMin);
+            limit_ = buf;
+        }
+        else
+            limit_.clear();
+        return std::min({vCmd, vStatic, vMoving});
     }
 
     /// Safety filter: a car's body swings when it steers (the rear overhang moves the other
@@ -247,6 +276,15 @@ public:
                 return;
             }
         }
+        if (vCmd > 0)
+        {
+            char buf[200];
+            std::snprintf(buf, sizeof buf,
+                          "the safety rollout: no softened command keeps the body free for 0.6 s (steering %.2f rad asked, "
+                          "body clearance %.2f m)",
+                          steerCmd, checker_.clearance(st.x, st.y, st.yaw));
+            limit_ = buf;
+        }
     }
 
     /// Collision of the body with the map (FCL footprint checker) or a moving obstacle (FCL):
@@ -256,7 +294,7 @@ public:
         if (!checker_.isValid(st.x, st.y, st.yaw))
         {
             res.outcome = DriveResult::Outcome::Collided;
-            res.reason = "hit the map at (" + std::to_string(st.x) + ", " + std::to_string(st.y) + ")";
+            res.reason = "hit the map at " + where(st);
             return false;
         }
         clearance = checker_.clearance(st.x, st.y, st.yaw);
@@ -270,7 +308,7 @@ public:
             if (fcl::collide(body.get(), obj.get(), creq, cres) > 0)
             {
                 res.outcome = DriveResult::Outcome::Collided;
-                res.reason = "hit moving obstacle '" + m.name + "' at t = " + std::to_string(t) + " s";
+                res.reason = "hit moving obstacle '" + m.name + "' at t = " + std::to_string(t) + " s, at " + where(st);
                 return false;
             }
             fcl::DistanceRequestd dreq;
@@ -307,9 +345,41 @@ private:
         freeMoving = brakeRange_;
         for (const MovingObstacle &m : scenario_.obstacles)
         {
-            double mx, my;
+            double mx, my, px, py;
             m.positionAt(time, mx, my);
-            lane(mx, my, m.shape == MovingObstacle::Shape::Disc ? m.radius : 0.5 * std::hypot(m.sizeX, m.sizeY), freeMoving);
+            const double r = m.shape == MovingObstacle::Shape::Disc ? m.radius : 0.5 * std::hypot(m.sizeX, m.sizeY);
+            lane(mx, my, r, freeMoving);
+            // where it is heading: its velocity as measured over the last step, extrapolated over
+            // the time the vehicle needs to stop (and two seconds more, at least 4 s); an obstacle
+            // that will be in the lane ahead within that time counts where it will cross, 0.3 m
+            // more, whenever the vehicle would get there (a vehicle that slows for a bend ahead
+            // would otherwise meet an obstacle it expected to miss): it yields, then goes on once
+            // the obstacle's course has left the lane
+            m.positionAt(std::max(0.0, time - prm_.dt), px, py);
+            const double vx = (mx - px) / prm_.dt, vy = (my - py) / prm_.dt;
+            if (std::hypot(vx, vy) < 1e-6) continue;
+            const double horizon = std::max(4.0, q.v / veh_.deceleration + 2.0);
+            // the body along the path ahead (within the braking range), not a straight lane:
+            // the first pose of the path whose body the obstacle's course meets is where the
+            // vehicle must not get to
+            const double front = frontOffset_, rear = veh_.rearOverhang, reachR = halfWidth_ + r + 0.1;
+            const auto &pts = path_.pts;
+            for (std::size_t i = seg_; i < pts.size() && path_.cum[i] <= sProj_ + brakeRange_; ++i)
+            {
+                if (path_.cum[i] < sProj_) continue;
+                const double hx = std::cos(path_.heading[i]), hy = std::sin(path_.heading[i]);
+                bool meets = false;
+                for (double tau = 0.0; tau <= horizon && !meets; tau += 0.1)
+                {
+                    const double ox = mx + vx * tau - pts[i].x, oy = my + vy * tau - pts[i].y;
+                    const double a = ox * hx + oy * hy, l = std::abs(-ox * hy + oy * hx);
+                    meets = a > -rear - r && a < front + r && l < reachR;
+                }
+                if (!meets) continue;
+                // the vehicle's front stays 0.3 m short of where its body would meet the course
+                freeMoving = std::min(freeMoving, std::max(path_.cum[i] - sProj_ - 0.3, 0.0));
+                break;
+            }
         }
         return free;
     }
@@ -324,5 +394,7 @@ private:
     double sProj_{0.0}, progressMark_{0.0}, markTime_{0.0}, viaBoost_{0.0}, lateral_{0.0};
     std::size_t seg_{0};
     std::vector<std::pair<double, double>> virtualObstacles_;
+    /// The rule that last held the vehicle back (empty: none), for the stop message.
+    mutable std::string limit_;
 };
 }  // namespace gridcar::detail

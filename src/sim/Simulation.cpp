@@ -126,7 +126,7 @@ struct DriveRun
             if (t >= tmax)
             {
                 res.outcome = DriveResult::Outcome::Timeout;
-                res.reason = "time limit " + std::to_string(tmax) + " s reached";
+                res.reason = "time limit " + std::to_string(tmax) + " s reached at " + follower.where(st);
                 return false;
             }
             if (!follower.recover(st, t, res)) return false;
@@ -213,7 +213,9 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
             for (Pose2 &q : p.poses) q.yaw = wrapAngle(q.yaw + M_PI);
         tracked.push_back(std::make_unique<detail::TrackedPath>(p.poses, fc));
         res.pathLength += tracked.back()->total;
-        budget += 10.0 + 5.0 * tracked.back()->total / fc.vehicle().maxSpeed;
+        // three times the piece's planned driving time (its velocity profile, corners and the
+        // steering-rate cap included): 5 x length / v_max timed out a 30 m/s car on a campus
+        budget += 10.0 + std::max(5.0 * tracked.back()->total / fc.vehicle().maxSpeed, 3.0 * tracked.back()->profile.time);
     }
     const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, checker.field().resolution());
     DriveRun run{scenario, prm, tol, prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget, res};

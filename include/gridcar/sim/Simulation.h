@@ -74,7 +74,7 @@ struct FollowerParams
     double goalTolerance{0.0};  ///< m; 0 = max(0.3 m, a cell)
     double stuckWindow{6.0};    ///< s without progress along the path before a recovery
     int maxRecoveries{3};       ///< recoveries before the run is declared stuck
-    double timeLimit{0.0};      ///< s; 0 = 60 s + 5 x (path length / v_max)
+    double timeLimit{0.0};      ///< s; 0 = 50 s + per piece 10 s + max(5 x length / v_max, 3 x planned driving time)
     bool recordTrajectory{true};
 };
 

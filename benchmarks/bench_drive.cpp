@@ -1,0 +1,251 @@
+// The drive suite of the issue "Paths a vehicle can follow and a follower that arrives": seeded
+// pairs on the real maps in ../shared (indoor maps with paper C's robot, the Tsudanuma campus at
+// 0.05 m with both cars) and on the embedded campus, planned by corner-astar and improved-astar
+// (integral), every exact plan checked independently (checkDrivable: exact FCL at 2 cm, K_max,
+// and its curvature rate measured), then driven by paper C's potential-field follower in the
+// kinematic simulation: without moving obstacles, and with a pedestrian crossing the path at its
+// middle when the vehicle gets there. Output: Markdown tables on stdout (and every run that does
+// not arrive, with the follower's reason), progress on stderr. See docs/simulation.md.
+#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/bench/RandomPairs.h"
+#include "gridcar/map/CampusGenerator.h"
+#include "gridcar/map/MapIO.h"
+#include "gridcar/sim/Simulation.h"
+#include "gridcar/vehicle/Dynamics.h"
+
+#include <CLI/CLI.hpp>
+#include <ompl/util/Console.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace gridcar;
+
+namespace
+{
+struct Area
+{
+    std::string name, map;  ///< map: a file under the shared folder, or "embedded"
+    std::string vehicle;
+    double lo, hi;          ///< m, straight-line distance of the pairs
+};
+
+const std::vector<Area> kAreas = {
+    {"willow-garage", "maps/ros/willow_garage/willow-2010-02-18-0.10.yaml", "paper-c-robot", 5, 40},
+    {"mit-stata", "maps/ros/mit_stata_basement/stata_basement.yaml", "paper-c-robot", 5, 40},
+    {"ut-gdc-3ne", "maps/ros/utexas_gdc_3ne/3ne.yaml", "paper-c-robot", 5, 40},
+    {"tsudanuma", "maps/ros/tsudanuma_campus/tsudanuma_all.yaml", "paper-i", 30, 150},
+    {"tsudanuma", "maps/ros/tsudanuma_campus/tsudanuma_all.yaml", "paper-c-car", 30, 150},
+    {"campus", "embedded", "paper-c-car", 50, 300},
+};
+
+const std::vector<std::pair<std::string, PlannerParams>> kPlanners = {
+    {"corner-astar", {}},
+    {"improved-astar", {{"mode", "integral"}}},
+};
+
+struct Options
+{
+    std::string shared{"../shared"};
+    int pairs{10};
+    unsigned seed{1};
+    double limit{10.0};
+    std::vector<std::string> only;
+    std::vector<std::string> params;
+    bool noMoving{false};
+    std::string dumpDir;
+};
+
+void writeCsv(const std::string &file, const std::vector<Pose2> &path)
+{
+    if (FILE *f = std::fopen(file.c_str(), "w"))
+    {
+        std::fprintf(f, "x,y,yaw\n");
+        for (const Pose2 &p : path) std::fprintf(f, "%.6f,%.6f,%.6f\n", p.x, p.y, p.yaw);
+        std::fclose(f);
+    }
+}
+
+struct Tally
+{
+    int plans{0}, exact{0}, drivable{0}, withinRate{0};
+    int reached[2]{0, 0}, collided[2]{0, 0}, stuck[2]{0, 0}, timeout[2]{0, 0}, driven[2]{0, 0};
+    std::vector<double> crossTrack, crossTrackMax, simTime, planTime;
+};
+
+/// A pedestrian (a disc) that crosses the path at its middle, perpendicular to it, and reaches
+/// the path when the vehicle would by the planned velocity profile; its size and speed scale
+/// with the vehicle (a person for a car, a small object for paper C's robot). It is walking for
+/// 8 s before it reaches the vehicle's lane (through walls if there are any: it is a moving
+/// obstacle, not a planner), so it can be seen coming; one that steps out from standing within
+/// the vehicle's braking distance could not be avoided by any follower.
+Scenario crossing(const std::vector<Pose2> &path, const VehicleParams &v)
+{
+    Scenario sc;
+    std::vector<double> cum{0.0};
+    for (std::size_t i = 1; i < path.size(); ++i)
+        cum.push_back(cum.back() + std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y));
+    if (path.size() < 2 || cum.back() < 1e-6) return sc;
+    const std::size_t mid = std::size_t(std::lower_bound(cum.begin(), cum.end(), cum.back() / 2) - cum.begin());
+    const std::size_t a = std::min(mid, path.size() - 2);
+    const double hx = path[a + 1].x - path[a].x, hy = path[a + 1].y - path[a].y, hn = std::hypot(hx, hy);
+    const double nx = -hy / hn, ny = hx / hn;
+    const double scale = std::clamp(v.length / 4.5, 0.1, 1.0);
+    MovingObstacle o;
+    o.name = "pedestrian";
+    o.radius = 0.3 * scale;
+    o.speed = 1.2 * scale;
+    const double side = 3.0 * scale + v.width, far = side + 8.0 * o.speed;
+    o.waypoints = {{path[mid].x - far * nx, path[mid].y - far * ny}, {path[mid].x + side * nx, path[mid].y + side * ny}};
+    std::vector<Pose2> firstHalf(path.begin(), path.begin() + std::ptrdiff_t(mid + 1));
+    const double arrive = firstHalf.size() > 1 ? drivingTime(firstHalf, v) : 0.0;
+    o.startTime = arrive - far / o.speed;  // negative: already walking at the start
+    sc.obstacles.push_back(o);
+    return sc;
+}
+
+double median(std::vector<double> v)
+{
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+void runArea(const Options &o, const Area &area, std::vector<std::string> &failures)
+{
+    std::shared_ptr<const OccupancyGrid> grid;
+    if (area.map == "embedded")
+        grid = std::make_shared<const OccupancyGrid>(generateCampus(CampusParams()));
+    else
+    {
+        const std::string file = o.shared + "/" + area.map;
+        if (!std::filesystem::exists(file))
+        {
+            std::printf("\n%s: %s is absent, skipped\n", area.name.c_str(), file.c_str());
+            return;
+        }
+        grid = std::make_shared<const OccupancyGrid>(loadMap(file));
+    }
+    const VehicleParams v = VehicleParams::preset(area.vehicle);
+    GridSetup setup = makeGridSetup(grid, v);
+    const auto pairs = randomPairs(*setup.checker, o.pairs, o.seed, area.lo, area.hi);
+    std::printf("\n### %s, %s (%zu seeded pairs %.0f-%.0f m apart, limit %.0f s)\n\n", area.name.c_str(), area.vehicle.c_str(),
+                pairs.size(), area.lo, area.hi, o.limit);
+    std::printf("| planner | exact | drivable (checked) | within the curvature rate | reached | collided | stuck / timeout | "
+                "with a pedestrian: reached | collided | stuck / timeout | cross-track median / max of means (m) | "
+                "solve() median (ms) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const auto &[name, params] : kPlanners)
+    {
+        PlannerParams all = params;
+        for (const auto &kv : parsePlannerParams(o.params)) all.push_back(kv);
+        auto planner = configurePlanner(setup.ss->getSpaceInformation(), {name, all, true, false});
+        const std::string label = name + (params.empty() ? "" : " " + params[0].first + "=" + params[0].second);
+        Tally t;
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+        {
+            const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), g = withFittingYaw(*setup.checker, pairs[k].second);
+            const QueryResult r = runQuery(setup, planner, s, g, o.limit, /*freeGoalHeading=*/true);
+            ++t.plans;
+            t.planTime.push_back(r.seconds);
+            if (r.status != ompl::base::PlannerStatus::EXACT_SOLUTION) continue;
+            ++t.exact;
+            if (!r.drivability.drivable) continue;
+            ++t.drivable;
+            if (r.drivability.maxCurvatureRate <= 1.02 * v.curvatureRateLimit()) ++t.withinRate;
+            for (int m = 0; m < (o.noMoving ? 1 : 2); ++m)
+            {
+                const DriveResult d = drivePath(r.path, *setup.checker, m ? crossing(r.path, v) : Scenario());
+                ++t.driven[m];
+                switch (d.outcome)
+                {
+                    case DriveResult::Outcome::Reached: ++t.reached[m]; break;
+                    case DriveResult::Outcome::Collided: ++t.collided[m]; break;
+                    case DriveResult::Outcome::Stuck: ++t.stuck[m]; break;
+                    default: ++t.timeout[m]; break;
+                }
+                if (m == 0)
+                {
+                    t.crossTrack.push_back(d.crossTrackMean);
+                    t.simTime.push_back(d.drivingTime);
+                }
+                if (d.outcome != DriveResult::Outcome::Reached)
+                {
+                    char buf[160];
+                    std::snprintf(buf, sizeof buf, "%s %s %s pair %zu (%.2f, %.2f -> %.2f, %.2f)%s: ", area.name.c_str(),
+                                  area.vehicle.c_str(), label.c_str(), k, s.x, s.y, g.x, g.y, m ? " with a pedestrian" : "");
+                    failures.push_back(buf + DriveResult::outcomeName(d.outcome) + ": " + d.reason);
+                    if (!o.dumpDir.empty())
+                    {
+                        std::string stem = o.dumpDir + "/" + area.name + "-" + area.vehicle + "-" + name + "-" +
+                                           std::to_string(k) + (m ? "-pedestrian" : "");
+                        writeCsv(stem + "-path.csv", r.path);
+                        if (FILE *f = std::fopen((stem + "-drive.csv").c_str(), "w"))
+                        {
+                            std::fprintf(f, "t,x,y,yaw,v,steer,ox,oy\n");
+                            const Scenario sc = m ? crossing(r.path, v) : Scenario();
+                            for (const TrajectorySample &q : d.trajectory)
+                            {
+                                double ox = NAN, oy = NAN;
+                                if (!sc.obstacles.empty()) sc.obstacles[0].positionAt(q.t, ox, oy);
+                                std::fprintf(f, "%.2f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f\n", q.t, q.x, q.y, q.yaw, q.v, q.steer, ox, oy);
+                            }
+                            std::fclose(f);
+                        }
+                    }
+                }
+                std::fprintf(stderr, "  %s %s %s pair %zu%s: %s\n", area.name.c_str(), area.vehicle.c_str(), label.c_str(), k,
+                             m ? " (pedestrian)" : "", DriveResult::outcomeName(d.outcome).c_str());
+            }
+        }
+        std::vector<double> ct = t.crossTrack;
+        std::printf("| %s | %d/%d | %d | %d | %d/%d | %d | %d / %d | %d/%d | %d | %d / %d | %.3f / %.3f | %.1f |\n", label.c_str(),
+                    t.exact, t.plans, t.drivable, t.withinRate, t.reached[0], t.driven[0], t.collided[0], t.stuck[0],
+                    t.timeout[0], t.reached[1], t.driven[1], t.collided[1], t.stuck[1], t.timeout[1], median(ct),
+                    ct.empty() ? NAN : *std::max_element(ct.begin(), ct.end()), 1e3 * median(t.planTime));
+        std::fflush(stdout);
+    }
+}
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    Options o;
+    CLI::App app{"Drive suite: seeded pairs on real maps, planned by gridcar's car-lattice planners, every exact and "
+                 "drivable plan driven by paper C's follower without and with a crossing pedestrian (see docs/simulation.md)"};
+    app.add_option("--shared", o.shared, "the shared folder holding maps/ (areas whose map is absent are skipped)")->capture_default_str();
+    app.add_option("--pairs", o.pairs, "seeded pairs per area")->capture_default_str()->check(CLI::Range(1, 10000));
+    app.add_option("--seed", o.seed, "random seed of the pairs")->capture_default_str();
+    app.add_option("--time-limit", o.limit, "solve() limit per query, s")->capture_default_str()->check(CLI::PositiveNumber);
+    app.add_option("--only", o.only, "areas to run: willow-garage, mit-stata, ut-gdc-3ne, tsudanuma, campus (default: all)");
+    app.add_option("--param", o.params, "NAME=VALUE set on every planner (repeatable)");
+    app.add_flag("--no-moving", o.noMoving, "drive without the pedestrian only");
+    app.add_option("--failed-dir", o.dumpDir, "write the path and the simulated trajectory (with the pedestrian's position) of "
+                                              "every run that does not arrive here as CSV (an existing directory)");
+    CLI11_PARSE(app, argc, argv);
+    for (const std::string &a : o.only)
+        if (std::none_of(kAreas.begin(), kAreas.end(), [&](const Area &x) { return x.name == a; }))
+        {
+            std::fprintf(stderr, "bench_drive: unknown area '%s'\n", a.c_str());
+            return 2;
+        }
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    std::vector<std::string> failures;
+    try
+    {
+        for (const Area &area : kAreas)
+            if (o.only.empty() || std::find(o.only.begin(), o.only.end(), area.name) != o.only.end())
+                runArea(o, area, failures);
+    }
+    catch (const std::exception &e)
+    {
+        std::fprintf(stderr, "bench_drive: %s\n", e.what());
+        return 2;
+    }
+    std::printf("\nRuns that did not reach the goal (%zu):\n\n", failures.size());
+    for (const std::string &f : failures) std::printf("- %s\n", f.c_str());
+    return 0;
+}
