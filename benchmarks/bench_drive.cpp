@@ -137,7 +137,7 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
                 pairs.size(), area.lo, area.hi, o.limit);
     std::printf("| planner | exact | drivable (checked) | within the curvature rate | reached | collided | stuck / timeout | "
                 "with a pedestrian: reached | collided | stuck / timeout | cross-track median / max of means (m) | "
-                "solve() median (ms) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+                "simulated driving time, median / sum (s) | solve() median (ms) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const auto &[name, params] : kPlanners)
     {
         PlannerParams all = params;
@@ -202,10 +202,13 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
             }
         }
         std::vector<double> ct = t.crossTrack;
-        std::printf("| %s | %d/%d | %d | %d | %d/%d | %d | %d / %d | %d/%d | %d | %d / %d | %.3f / %.3f | %.1f |\n", label.c_str(),
-                    t.exact, t.plans, t.drivable, t.withinRate, t.reached[0], t.driven[0], t.collided[0], t.stuck[0],
-                    t.timeout[0], t.reached[1], t.driven[1], t.collided[1], t.stuck[1], t.timeout[1], median(ct),
-                    ct.empty() ? NAN : *std::max_element(ct.begin(), ct.end()), 1e3 * median(t.planTime));
+        double simSum = 0;
+        for (double x : t.simTime) simSum += x;
+        std::printf("| %s | %d/%d | %d | %d | %d/%d | %d | %d / %d | %d/%d | %d | %d / %d | %.3f / %.3f | %.1f / %.0f | %.1f |\n",
+                    label.c_str(), t.exact, t.plans, t.drivable, t.withinRate, t.reached[0], t.driven[0], t.collided[0],
+                    t.stuck[0], t.timeout[0], t.reached[1], t.driven[1], t.collided[1], t.stuck[1], t.timeout[1], median(ct),
+                    ct.empty() ? NAN : *std::max_element(ct.begin(), ct.end()), median(t.simTime), simSum,
+                    1e3 * median(t.planTime));
         std::fflush(stdout);
     }
 }

@@ -7,6 +7,7 @@
 #include "gridcar/vehicle/Dynamics.h"
 
 #include "collision/detail/FclShapes.h"
+#include "sim/Prediction.h"
 #include "sim/TrackedPath.h"
 
 #include <fcl/narrowphase/collision.h>
@@ -246,19 +247,27 @@ public:
     /// Safety filter: a car's body swings when it steers (the rear overhang moves the other
     /// way), so the commands are rolled out for a short horizon and softened until the rollout
     /// stays free; if nothing does, the vehicle stops (and may end as stuck).
-    void safeCommand(const VehicleState &st, double t, double steerCmd, double vCmd, double &steerUse, double &vUse) const
+    /// @p steerTrack: the steering that follows the path alone (feed-forward and the path's
+    /// heading and cross-track errors, no potential field), tried right after the command
+    /// itself: where the path passes an obstacle closely, softening a command the field has bent
+    /// does not bring the body back to the path the planner checked.
+    void safeCommand(const VehicleState &st, double t, double steerCmd, double vCmd, double &steerUse, double &vUse,
+                     double steerTrack) const
     {
         steerUse = steerCmd, vUse = 0.0;
-        const double candidates[][2] = {{1.0, 1.0}, {0.5, 1.0}, {0.0, 1.0}, {1.0, 0.5}, {0.5, 0.5}, {0.0, 0.5}, {-0.5, 0.5}};
+        // {steering factor, speed factor, follow the path alone}
+        const double candidates[][3] = {{1.0, 1.0, 0}, {1.0, 1.0, 1}, {1.0, 0.5, 1}, {0.5, 1.0, 0}, {0.0, 1.0, 0},
+                                        {1.0, 0.5, 0}, {0.5, 0.5, 0}, {0.0, 0.5, 0}, {-0.5, 0.5, 0}};
         const int horizon = std::max(2, int(std::ceil(0.6 / prm_.dt)));
         for (const auto &cand : candidates)
         {
+            const double steer = cand[0] * (cand[2] > 0 ? steerTrack : steerCmd);
             VehicleState r = st;
             bool ok = true;
             for (int k = 1; k <= horizon && ok; ++k)
             {
-                r = stepBicycle(r, veh_, cand[0] * steerCmd, cand[1] * vCmd, prm_.dt);
-                if (k % (horizon / 2) != 0) continue;
+                r = stepBicycle(r, veh_, steer, cand[1] * vCmd, prm_.dt);
+                // every step: the body can swing into a corner between two checks further apart
                 ok = checker_.isValid(r.x, r.y, r.yaw);
                 for (const MovingObstacle &m : scenario_.obstacles)
                 {
@@ -271,7 +280,7 @@ public:
             }
             if (ok)
             {
-                steerUse = cand[0] * steerCmd;
+                steerUse = steer;
                 vUse = cand[1] * vCmd;
                 return;
             }
@@ -345,41 +354,14 @@ private:
         freeMoving = brakeRange_;
         for (const MovingObstacle &m : scenario_.obstacles)
         {
-            double mx, my, px, py;
+            double mx, my;
             m.positionAt(time, mx, my);
             const double r = m.shape == MovingObstacle::Shape::Disc ? m.radius : 0.5 * std::hypot(m.sizeX, m.sizeY);
             lane(mx, my, r, freeMoving);
-            // where it is heading: its velocity as measured over the last step, extrapolated over
-            // the time the vehicle needs to stop (and two seconds more, at least 4 s); an obstacle
-            // that will be in the lane ahead within that time counts where it will cross, 0.3 m
-            // more, whenever the vehicle would get there (a vehicle that slows for a bend ahead
-            // would otherwise meet an obstacle it expected to miss): it yields, then goes on once
-            // the obstacle's course has left the lane
-            m.positionAt(std::max(0.0, time - prm_.dt), px, py);
-            const double vx = (mx - px) / prm_.dt, vy = (my - py) / prm_.dt;
-            if (std::hypot(vx, vy) < 1e-6) continue;
-            const double horizon = std::max(4.0, q.v / veh_.deceleration + 2.0);
-            // the body along the path ahead (within the braking range), not a straight lane:
-            // the first pose of the path whose body the obstacle's course meets is where the
-            // vehicle must not get to
-            const double front = frontOffset_, rear = veh_.rearOverhang, reachR = halfWidth_ + r + 0.1;
-            const auto &pts = path_.pts;
-            for (std::size_t i = seg_; i < pts.size() && path_.cum[i] <= sProj_ + brakeRange_; ++i)
-            {
-                if (path_.cum[i] < sProj_) continue;
-                const double hx = std::cos(path_.heading[i]), hy = std::sin(path_.heading[i]);
-                bool meets = false;
-                for (double tau = 0.0; tau <= horizon && !meets; tau += 0.1)
-                {
-                    const double ox = mx + vx * tau - pts[i].x, oy = my + vy * tau - pts[i].y;
-                    const double a = ox * hx + oy * hy, l = std::abs(-ox * hy + oy * hx);
-                    meets = a > -rear - r && a < front + r && l < reachR;
-                }
-                if (!meets) continue;
-                // the vehicle's front stays 0.3 m short of where its body would meet the course
-                freeMoving = std::min(freeMoving, std::max(path_.cum[i] - sProj_ - 0.3, 0.0));
-                break;
-            }
+            const double vx = m.velocityEstimate(time, prm_.dt, 0), vy = m.velocityEstimate(time, prm_.dt, 1);
+            const double horizon =
+                std::min(20.0, std::max({6.0, q.v / veh_.deceleration + 2.0, brakeRange_ / std::max(q.v, 0.1)}));
+            freeMoving = std::min(freeMoving, courseAhead(path_, seg_, sProj_, brakeRange_, veh_, mx, my, r, vx, vy, horizon));
         }
         return free;
     }

@@ -43,6 +43,15 @@ void MovingObstacle::positionAt(double t, double &x, double &y) const
     y = pts.back().second;
 }
 
+double MovingObstacle::velocityEstimate(double t, double dt, int axis) const
+{
+    double x1, y1, x0, y0;
+    positionAt(t, x1, y1);
+    positionAt(std::max(0.0, t - dt), x0, y0);
+    if (!(dt > 0)) return 0.0;
+    return (axis == 0 ? x1 - x0 : y1 - y0) / dt;
+}
+
 double MovingObstacle::distanceFrom(double px, double py, double t) const
 {
     double x, y;

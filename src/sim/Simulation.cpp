@@ -140,7 +140,7 @@ struct DriveRun
             // paper C's rule alone: steer at the force
             const double s = follower.progress();
             const std::size_t sg = path.segmentAt(s), ahead = path.segmentAt(s + std::max(0.2, 0.3 * st.v));
-            double bend = 0.0, feedForward = 0.0, crossTerm = 0.0;
+            double bend = 0.0, feedForward = 0.0, crossTerm = 0.0, headingTerm = 0.0;
             if (path.followable)
             {
                 double vx, vy, px, py;
@@ -151,12 +151,14 @@ struct DriveRun
                 // the cross-track error steered back directly (Stanley's term): the via-point
                 // alone sees a lateral offset only as a small angle at a long look-ahead
                 crossTerm = -std::atan(prm.crossTrackGain * follower.lateral() / (std::abs(st.v) + 0.5));
+                headingTerm = wrapAngle(path.heading[sg] - st.yaw);
             }
             const double err = wrapAngle(std::atan2(fy, fx) - st.yaw - bend);
             const double steerCmd = feedForward + prm.headingGain * err + crossTerm;
             const double vCmd = follower.speedCommand(st, t, err, steerCmd, rhoMin, tolHere);
             double steerUse, vUse;
-            follower.safeCommand(st, t, steerCmd, vCmd, steerUse, vUse);
+            follower.safeCommand(st, t, steerCmd, vCmd, steerUse, vUse,
+                                 path.followable ? feedForward + headingTerm + crossTerm : steerCmd);
             if (!step(follower, veh, st, steerUse, vUse, backward)) return false;
         }
     }

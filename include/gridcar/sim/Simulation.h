@@ -28,6 +28,9 @@ struct MovingObstacle
     void positionAt(double t, double &x, double &y) const;
     /// Distance from (x, y) to the obstacle's boundary (negative inside), m.
     double distanceFrom(double x, double y, double t) const;
+    /// Component @p axis (0: x, 1: y) of its velocity as a sensor would measure it at time t:
+    /// the displacement over the last @p dt seconds (0 before it starts moving), m/s.
+    double velocityEstimate(double t, double dt, int axis) const;
 };
 
 /// Moving obstacles of a run, from a scenario file.
