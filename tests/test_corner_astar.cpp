@@ -1,4 +1,7 @@
 #include "gridcar/planners/CornerAStar.h"
+#include "gridcar/path/Drivability.h"
+#include "gridcar/spaces/OmplAdapters.h"
+#include "gridcar/vehicle/Dynamics.h"
 #include "gridcar/planners/GridAStar.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/planners/SmoothedPlanner.h"
@@ -229,4 +232,36 @@ TEST(CornerAStar, FewerHeadingChangesThanAStarEuclideanOnCampusQueries)
     EXPECT_GE(fewer, queries - 1);
     std::printf("heading changes over %d campus queries: corner-astar %d, astar-euclidean %d\n", queries, totalCorner,
                 totalEuclid);
+}
+
+// cost=time: the driving time in seconds as the car lattice's cost (paper C's future work): an
+// exact drivable path whose search cost is at least its length at v_max and at most its
+// length at the slowest speed a turn at K_max allows plus the braking; refused on the grid
+// lattice and for an unknown cost.
+TEST(CornerAStar, DrivingTimeCostOnTheCarLattice)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    auto grid = std::make_shared<OccupancyGrid>(400, 400, 0.1, CellState::Free);
+    for (int r = 100; r < 300; ++r)
+        for (int c = 190; c < 210; ++c) grid->set(c, r, CellState::Occupied);  // a wall to go round
+    GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
+    auto p = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
+    EXPECT_THROW(p->setCost("fastest"), std::invalid_argument);
+    p->setCost("time");
+    EXPECT_EQ(p->cost(), "time");
+    s.ss->setPlanner(p);
+    s.setStartAndGoal({5.0, 20.0, 0.0}, {35.0, 20.0, 0.0});
+    ASSERT_EQ(s.ss->solve(5.0), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const std::vector<Pose2> path = toPoses(s.ss->getSolutionPath());
+    EXPECT_TRUE(checkDrivable(path, *s.checker).drivable);
+    double len = 0;
+    for (std::size_t i = 1; i < path.size(); ++i) len += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+    const VehicleParams &v = s.checker->vehicle();
+    EXPECT_GE(p->lastCost(), len / v.maxSpeed);  // seconds, at least the length at v_max
+    EXPECT_LE(p->lastCost(), len / std::sqrt(lateralAccelLimit(v) * v.minTurningRadius()) + 10 * cornerTimeLost(v, M_PI));
+    GridSetup g = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
+    auto q = std::make_shared<CornerAStar>(g.ss->getSpaceInformation());
+    q->setCost("time");
+    q->setLattice("grid");
+    EXPECT_THROW(q->setup(), std::invalid_argument);
 }

@@ -1,5 +1,7 @@
 #include "gridcar/planners/CornerAStar.h"
+#include "gridcar/core/Angles.h"
 #include "gridcar/core/Errors.h"
+#include "gridcar/vehicle/Dynamics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -110,6 +112,7 @@ CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanne
     declareParam<std::string>("weights", this, &CornerAStar::setWeightMode, &CornerAStar::weightMode, "paper,physics");
     declareParam<std::string>("lattice", this, &CornerAStar::setLattice, &CornerAStar::lattice, "car,grid");
     declareParam<std::string>("mode", this, &CornerAStar::setMode, &CornerAStar::mode, "drivable,paper");
+    declareParam<std::string>("cost", this, &CornerAStar::setCost, &CornerAStar::cost, "corners,time");
     declareCarLatticeParams();
 }
 
@@ -119,6 +122,14 @@ void CornerAStar::setMode(const std::string &m)
         throw std::invalid_argument("corner-astar: mode must be 'drivable' or 'paper', got '" + printable(m) + "'");
     params_.carLattice = m == "drivable";
     parameterSet("mode");
+}
+
+void CornerAStar::setCost(const std::string &c)
+{
+    if (c != "corners" && c != "time")
+        throw std::invalid_argument("corner-astar: cost must be 'corners' or 'time', got '" + printable(c) + "'");
+    params_.timeCost = c == "time";
+    parameterSet("cost");
 }
 
 void CornerAStar::setLattice(const std::string &l)
@@ -162,7 +173,47 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<LatticeCostModel> CornerAStar::carCost() const { return std::make_unique<CornerCost>(*this); }
+namespace
+{
+/// Driving time (s): each sample interval at the speed limit of its curvature, plus the time lost
+/// braking for the primitive's heading change and accelerating after it.
+class TimeCost : public LatticeCostModel
+{
+public:
+    explicit TimeCost(const VehicleParams &v)
+      : v_(v), aLat_(lateralAccelLimit(v)), vMax_(v.maxSpeed), vManoeuvre_(manoeuvringSpeed(v))
+    {
+    }
+    double stepCost(const Pose2 &from, const std::vector<Pose2> &samples, double length, double absTurn) const override
+    {
+        double t = 0.0, s = 0.0;
+        Pose2 a = from;
+        for (const Pose2 &b : samples)
+        {
+            const double ds = std::hypot(b.x - a.x, b.y - a.y);
+            const double k = ds > 1e-9 ? std::abs(wrapAngle(b.yaw - a.yaw)) / ds : 0.0;
+            const double v = k > 1e-9 && aLat_ > 0 ? std::min(vMax_, std::sqrt(aLat_ / k)) : vMax_;
+            t += ds / v;
+            s += ds;
+            a = b;
+        }
+        if (s < length) t += (length - s) / vMax_;  // a step whose samples do not cover it all
+        return t + cornerTimeLost(v_, absTurn);
+    }
+    double minCostPerMetre() const override { return 1.0 / vMax_; }
+    double costPerMetreOfPenalty() const override { return 1.0 / vManoeuvre_; }
+
+private:
+    VehicleParams v_;
+    double aLat_, vMax_, vManoeuvre_;
+};
+}  // namespace
+
+std::unique_ptr<LatticeCostModel> CornerAStar::carCost() const
+{
+    if (params_.timeCost) return std::make_unique<TimeCost>(vehicle());
+    return std::make_unique<CornerCost>(*this);
+}
 
 namespace
 {

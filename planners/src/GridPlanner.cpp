@@ -141,7 +141,8 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     if (car)
     {
         const std::unique_ptr<LatticeCostModel> cost = carCost();
-        const CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty, cuspPenalty(),
+        const CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty,
+                                       cuspPenalty() * cost->costPerMetreOfPenalty(),
                                        params_.curveHeuristic ? 30.0 * carSearch()->lattice().config().turnRadius : 0.0,
                                        curvatureRate(), 1.0 / turningRadius()};
         run = car_.solve(si_, start, params_.freeStartHeading, options, goal_, *cost, cancelled, support_.progress());

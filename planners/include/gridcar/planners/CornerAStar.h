@@ -17,6 +17,7 @@ struct CornerAStarParams
     bool weightSet[3]{false, false, false};  ///< which of them were set explicitly (45, 90, 135)
     bool physics{false};     ///< `weights` = physics
     bool carLattice{true};   ///< `lattice` = car (`mode` = drivable)
+    bool timeCost{false};    ///< `cost` = time: driving time (s) instead of length + corner weights
 };
 
 /**
@@ -46,6 +47,16 @@ struct CornerAStarParams
  * corner_speed_* when set, else sqrt(min(mu g, a_lat) r) with r the minimum turning radius
  * scaled by 1 / tan(theta / 2)). A `corner_weight_*` set explicitly is used as given with either
  * `weights`, whenever it is set (before or after setup()); the others come from `weights`.
+ *
+ * `cost = time` (car lattice only; default `corners`): paper C's future work, the driving time
+ * itself as the search cost, in seconds: each primitive costs its length at the speed limit of
+ * its curvature at every sample, min(v_max, sqrt(min(mu g, a_lat) / kappa)), plus the time lost
+ * braking for its heading change and accelerating after it (cornerTimeLost(), the physics
+ * weights' model in seconds); the heuristic is the lattice's distance bound / v_max (every metre
+ * takes at least 1 / v_max seconds: admissible); a gear change costs `cusp_penalty` metres at
+ * the manoeuvring speed. The corner weights do not act then. Braking is charged per primitive,
+ * not from the speed the path arrives with (that would need the speed in the state), so a
+ * string of small turns is charged more than a car loses on it.
  *
  * @par External documentation
  * Paper C: "Shortest driving-time path planning considering UGV driving characteristics and
@@ -77,10 +88,19 @@ public:
     std::string lattice() const { return params_.carLattice ? "car" : "grid"; }
     void setLattice(const std::string &l);
     bool usesCarLattice() const override { return params_.carLattice; }
+    /// `cost`: corners (length + corner weights, paper C) or time (driving time, seconds).
+    std::string cost() const { return params_.timeCost ? "time" : "corners"; }
+    void setCost(const std::string &c);
     /// Corner weight (m) of a heading change of @p rad radians (linear between the table's).
     double turnWeight(double rad) const;
 
 protected:
+    std::vector<std::string> carLatticeOnlyParams() const override
+    {
+        std::vector<std::string> p = GridPlanner::carLatticeOnlyParams();
+        p.push_back("cost");
+        return p;
+    }
     std::unique_ptr<GridNodes> makeGridNodes() override;
     std::unique_ptr<LatticeCostModel> carCost() const override;
 

@@ -39,6 +39,9 @@ public:
     /// A lower bound of the cost per radian of heading change (beyond the length): the
     /// heuristic adds it times the least turning any forward path to the goal needs.
     virtual double minTurnCostPerRad() const { return 0.0; }
+    /// The cost of a metre where a length (the cusp penalty, metres of the gear change) is
+    /// turned into this model's units. Default 1 (costs in metres).
+    virtual double costPerMetreOfPenalty() const { return 1.0; }
     /// Paper I's evaluation: order the open list by priority() instead of g + h.
     virtual bool customPriority() const { return false; }
     virtual double priority(double g, double h, const Pose2 &at) const { (void)at; return g + h; }
