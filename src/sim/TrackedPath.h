@@ -87,13 +87,14 @@ struct TrackedPath
             if (b <= a || cum[b] - cum[a] < 1e-6) continue;
             kappa[i] = wrapAngle(heading[b == pts.size() - 1 ? b - 1 : b] - heading[a]) / (cum[b] - cum[a]);
         }
-        capForSteering(veh);
         // followable: the turning-angle curvature at every vertex (the drivable check's test)
         for (std::size_t i = 1; i + 1 < pts.size() && followable; ++i)
         {
             const double ds = 0.5 * (cum[i + 1] - cum[i - 1]);
             if (ds > 0 && std::abs(wrapAngle(heading[i] - heading[i - 1])) / ds > 1.05 * veh.maxCurvature()) followable = false;
         }
+        // (a grid path's kinks are not followed exactly: no steering-rate cap there)
+        if (followable) capForSteering(veh);
     }
 
     /// The steering wheel turns at most maxSteerRateDeg: where the path's curvature changes by
@@ -130,6 +131,9 @@ struct TrackedPath
             const double ds = profile.s[k + 1] - profile.s[k];
             profile.v[k] = std::min(profile.v[k], std::sqrt(profile.v[k + 1] * profile.v[k + 1] + 2 * veh.deceleration * ds));
         }
+        profile.time = 0.0;  // the time limit of a run is taken from it
+        for (std::size_t k = 1; k < profile.v.size(); ++k)
+            profile.time += 2 * (profile.s[k] - profile.s[k - 1]) / std::max(profile.v[k - 1] + profile.v[k], 1e-9);
     }
 
     /// The index of the segment holding arc length s.
