@@ -56,7 +56,6 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     }
     FamilyRun run;
     const auto t0 = std::chrono::steady_clock::now();
-    lastSmoothing_ = {};
     CarLatticeResult r = search_->run(q, cost, cancelled, progress);
     last_ = search_.get();
     if (fallback_ && !r.exact && r.outcome != SearchOutcome::Cancelled && !cancelled())
@@ -101,7 +100,6 @@ void CarFamily::smooth(const CarSearchOptions &options, std::vector<Pose2> &path
         return last_->curveFree(poses[0], int(poses.size()) - 1, [&poses](int i) { return poses[std::size_t(i)]; });
     };
     CurvatureSmoothing s = smoothCurvature(path, o);
-    lastSmoothing_ = {s.stretches, s.replaced, s.maxRate};
     if (!s.cancelled) path = std::move(s.path);
 }
 

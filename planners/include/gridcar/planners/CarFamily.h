@@ -57,18 +57,9 @@ public:
     /// The explored graph of the last search.
     void plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const;
 
-    /// What the continuous-curvature step did to the last query's path.
-    struct Smoothing
-    {
-        int stretches{0};    ///< curvature jumps faster than the rate
-        int replaced{0};     ///< of them, replaced
-        double maxRate{0.0}; ///< 1/m^2 left in the path
-    };
-    const Smoothing &lastSmoothing() const { return lastSmoothing_; }
 
 private:
     void smooth(const CarSearchOptions &options, std::vector<Pose2> &path, const std::function<bool()> &cancelled);
-    Smoothing lastSmoothing_;
     std::shared_ptr<CarCollision> collision_;
     std::unique_ptr<CarLatticeSearch> search_, fallback_;
     const CarLatticeSearch *last_{nullptr};
