@@ -149,11 +149,17 @@ def main():
                  "footprint clearance (m); turns: heading changes above 15 deg over 3 m chords.".format(
                      os.path.basename(a.db)))
     lines.append("")
+    names = [e[1] for e in exps]
     for eid, ename, tlimit, runcount in exps:
+        # one experiment per query; a query run at several time limits has one experiment per
+        # limit under the same name (Planner Arena groups them by the time_limit parameter)
+        tag = "-t{:g}s".format(tlimit) if names.count(ename) > 1 else ""
+        if sum(1 for e in exps if e[1] == ename and e[2] == tlimit) > 1:  # shards merged: one per log
+            tag += "-e{}".format(eid)
         planners = cur.execute(
             "SELECT DISTINCT p.id, p.name FROM runs r JOIN plannerConfigs p ON r.plannerid = p.id "
             "WHERE r.experimentid = ? ORDER BY p.id", (eid,)).fetchall()
-        lines.append("## {} (time limit {:g} s, {} runs per planner)".format(ename, tlimit, runcount))
+        lines.append("## {} (time limit {:g} s, {} runs per planner)".format(ename + tag, tlimit, runcount))
         lines.append("")
         hdr = ["planner", "success"] + [h for _, h, _ in METRICS]
         lines.append("| " + " | ".join(hdr) + " |")
@@ -187,15 +193,15 @@ def main():
             if c in LOG_AXIS:
                 ax.set_xscale("log")
             ax.grid(True, axis="x", alpha=0.3, which="both")
-        fig.suptitle(ename)
+        fig.suptitle("{} (time limit {:g} s)".format(ename, tlimit))
         fig.tight_layout()
-        box = "{}-box.png".format(ename)
+        box = "{}{}-box.png".format(ename, tag)
         fig.savefig(os.path.join(a.out, box), dpi=90)
         plt.close(fig)
 
         # paths on the map
         m = maps.get(ename)
-        if m:
+        if m and names.index(ename) == exps.index((eid, ename, tlimit, runcount)):  # once per query
             img = mpimg.imread(os.path.join(a.out, m["image"]))
             x0, x1, y0, y1 = m["extent"]
             fig, ax = plt.subplots(figsize=(10, 10 * (y1 - y0) / max(x1 - x0, 1e-9) + 0.5))

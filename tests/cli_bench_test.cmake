@@ -28,6 +28,21 @@ foreach(f smoke-q1.log smoke.db report.md smoke-q1-paths.png smoke-q1-box.png)
   endif()
 endforeach()
 count_planners("${WORK}/full/smoke.db" 18)
+# what Planner Arena reads from the smoke database (tests/planner_arena_schema.py): tables and
+# columns, an OMPL version, no path attributes on runs without an exact solution, no empty
+# progress columns, one experiment per query, a set-up text naming only planners that ran
+execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/tests/planner_arena_schema.py" "${WORK}/full/smoke.db" 1
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the smoke database is not what Planner Arena should read: ${out}${err}")
+endif()
+# docs/benchmark.md's plotting command leaves the database intact and writes smoke.pdf beside it
+execute_process(COMMAND ompl_benchmark_statistics -d smoke.db -p WORKING_DIRECTORY "${WORK}/full"
+  RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/full/smoke.pdf")
+  message(FATAL_ERROR "ompl_benchmark_statistics -d smoke.db -p wrote no smoke.pdf: ${err}")
+endif()
+count_planners("${WORK}/full/smoke.db" 18)
 file(READ "${WORK}/full/report.md" report)
 foreach(p dijkstra corner-astar-physics improved-astar-integral bitstar rrtstar+smooth)
   expect_in("${report}" "| ${p} |")
@@ -106,11 +121,12 @@ run_gridcar(0 bench "${WORK}/probs/p5.yaml" --out "${WORK}/p5" --shared "${rel}"
 expect_in("${ERR}" "1 logs written")
 
 # Planner Arena: a Reeds-Shepp race at two time limits writes a database in OMPL's schema
-# (experiments, plannerConfigs, runs, progress), every exact path drivable
+# (experiments, plannerConfigs, runs, progress), every exact path drivable, the query one
+# experiment name at two time_limit values, RRT*'s progress sampled
 file(WRITE "${WORK}/arena.yaml" "name: arena\nmap: embedded\nvehicle: paper-i\nspace: reeds-shepp\ntime_limits: [0.6, 1.2]\nruns: 1\nqueries:\n  - {start: [504.365, 384.271], goal: [587.805, 345.829]}\nplanners:\n  - corner-astar\n  - rrtstar\n  - rrtconnect+simplify\n")
 run_gridcar(0 bench "${WORK}/arena.yaml" --out "${WORK}/arena")
 expect_in("${ERR}" "query 1 at 1.2 s")
-execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/tests/planner_arena_schema.py" "${WORK}/arena/arena.db" 2
+execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/tests/planner_arena_schema.py" "${WORK}/arena/arena.db" 2 2
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the database does not load in Planner Arena's schema: ${out}${err}")

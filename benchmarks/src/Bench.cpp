@@ -15,6 +15,7 @@
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"
 
+#include <ompl/config.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
@@ -28,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 #ifndef GRIDCAR_REPORT_SCRIPT
 #define GRIDCAR_REPORT_SCRIPT "scripts/bench_report.py"
@@ -129,6 +131,58 @@ void addRunProperties(const BenchWorld &w, const ompl::base::Planner &planner, c
         run["expanded nodes INTEGER"] = std::to_string(std::uint64_t(progressValue(planner, "expanded nodes INTEGER")));
 }
 
+/// OMPL's version from its headers' numbers: Debian's OMPL 1.5.2 reports an empty
+/// OMPL_VERSION, which its Benchmark writes into every log ("OMPL version " and nothing), and
+/// ompl_benchmark_statistics then stores the word "version" as the version.
+std::string omplVersion()
+{
+    return std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) + "." +
+           std::to_string(OMPL_PATCH_VERSION);
+}
+
+/// ompl::tools::Benchmark whose log reads well in Planner Arena: the OMPL version filled in,
+/// the set-up text without the default planner SimpleSetup allocates (and never runs), and
+/// progress tables only for planners whose runs lasted long enough to be sampled.
+class ArenaBenchmark : public ompl::tools::Benchmark
+{
+public:
+    using ompl::tools::Benchmark::Benchmark;
+
+    /// After benchmark(): the set-up text and the progress data as Planner Arena should see them.
+    void tidy(const ompl::geometric::SimpleSetup &ss)
+    {
+        std::stringstream setup;
+        ss.getSpaceInformation()->printSettings(setup);
+        ss.getProblemDefinition()->print(setup);
+        setup << "\nProperties of benchmarked planners:\n";
+        for (const auto &pl : planners_) pl->printProperties(setup);
+        exp_.setupInfo = setup.str();
+        for (auto &pe : exp_.planners)
+        {
+            bool sampled = false;
+            for (const auto &r : pe.runsProgressData) sampled = sampled || !r.empty();
+            if (!sampled) pe.runsProgressData.clear();  // no progress table rows, no empty plot
+        }
+    }
+
+    /// The log file, with "OMPL version" followed by the version.
+    void save(const std::string &file) const
+    {
+        std::stringstream text;
+        if (!saveResultsToStream(text)) throw std::runtime_error("cannot format the benchmark log " + file);
+        std::string all = text.str();
+        const std::string head = "OMPL version ";
+        if (all.compare(0, head.size(), head) == 0)
+        {
+            const std::size_t eol = all.find('\n');
+            all = head + omplVersion() + all.substr(eol);
+        }
+        std::ofstream out(file);
+        out << all;
+        if (!out) throw std::runtime_error("cannot write " + file);
+    }
+};
+
 /// A picture of a query's surroundings for the report; its entry in the paths file.
 void drawQuery(const BenchWorld &w, const std::string &outDir, const std::string &expName, const std::string &tag,
                const Pose2 &start, const Pose2 &goal, nlohmann::json &pathsJson)
@@ -188,8 +242,10 @@ void benchmarkQuery(BenchRun &run, std::size_t qi, double timeLimit, const std::
     if (!setup.checker->isValid(goal)) bad(p, q + ": the goal is off the map or in collision for " + run.w.vehicle.name);
     setup.ss->clear();
     setup.setStartAndGoal(start, goal, /*freeGoalHeading=*/!goalYaw);
-    const std::string expName = p.name + "-q" + std::to_string(qi + 1) + limitTag;
-    ompl::tools::Benchmark b(*setup.ss, expName);
+    // one experiment per query: its runs at several time limits share the name and differ in the
+    // time_limit parameter, which Planner Arena groups by
+    const std::string expName = p.name + "-q" + std::to_string(qi + 1);
+    ArenaBenchmark b(*setup.ss, expName);
     b.addExperimentParameter("query", "INTEGER", std::to_string(qi + 1));
     b.addExperimentParameter("start_x", "REAL", std::to_string(start.x));
     b.addExperimentParameter("start_y", "REAL", std::to_string(start.y));
@@ -233,7 +289,9 @@ void benchmarkQuery(BenchRun &run, std::size_t qi, double timeLimit, const std::
     });
     b.setPostRunEvent([&](const ompl::base::PlannerPtr &pl, ompl::tools::Benchmark::RunProperties &props) {
         const auto &pdef = setup.ss->getProblemDefinition();
-        if (!pdef->hasSolution()) return;
+        // path attributes only for an exact solution: an approximate one keeps OMPL's time and
+        // status, and is not plotted beside real solutions
+        if (!pdef->hasExactSolution()) return;
         const double total = std::chrono::duration<double>(Clock::now() - solveStart).count();
         const std::vector<Pose2> poses = solutionPoses(setup, *pl);
         addRunProperties(run.w, *pl, poses, props);
@@ -245,7 +303,7 @@ void benchmarkQuery(BenchRun &run, std::size_t qi, double timeLimit, const std::
         else if (!anytime)  // OMPL's own solve time when it has recorded it already
             props["time to first solution REAL"] = props.count("time REAL") ? props["time REAL"] : std::to_string(total);
         const std::string key = expName + "|" + pl->getName();
-        if (!run.pathsJson.contains(key) && !pdef->hasApproximateSolution())
+        if (!run.pathsJson.contains(key))
         {
             nlohmann::json pts = nlohmann::json::array();
             for (const Pose2 &pp : poses) pts.push_back({pp.x, pp.y, pp.yaw});
@@ -254,10 +312,12 @@ void benchmarkQuery(BenchRun &run, std::size_t qi, double timeLimit, const std::
     });
     ompl::tools::Benchmark::Request req(timeLimit, p.memoryMb, p.runs, 0.5, false, false, /*simplify=*/false);
     b.benchmark(req);
-    const std::string log = (fs::path(run.o.outDir) / (expName + run.tag + ".log")).string();
-    if (!b.saveResultsToFile(log.c_str())) throw std::runtime_error("cannot write " + log);
+    b.tidy(*setup.ss);
+    const std::string log = (fs::path(run.o.outDir) / (expName + limitTag + run.tag + ".log")).string();
+    b.save(log);
     run.logs.push_back(log);
-    drawQuery(run.w, run.o.outDir, expName, run.tag, start, goal, run.pathsJson);
+    if (!run.pathsJson["_maps"].contains(expName))
+        drawQuery(run.w, run.o.outDir, expName, run.tag, start, goal, run.pathsJson);
 }
 
 /// @p text as one single-quoted shell word (a ' inside becomes '\'').
