@@ -26,6 +26,13 @@ expect_in("${OUT}" "\"outcome\":\"reached\"")
 run_gridcar(0 plan ${Q} --planner astar-euclidean --out "${WORK}/p.csv")
 run_gridcar(0 drive --map "${WORK}/campus.yaml" --vehicle paper-c-robot --path "${WORK}/p.csv")
 expect_in("${OUT}" "reached")
+# the same path as JSON with radians, driven with the vehicle from a parameters file
+run_gridcar(0 plan ${Q} --planner astar-euclidean --out "${WORK}/p.json" --angle-unit rad)
+file(WRITE "${WORK}/robot.yaml" "vehicle: paper-c-robot\n")
+run_gridcar(0 drive --map "${WORK}/campus.yaml" --params-file "${WORK}/robot.yaml" --path "${WORK}/p.json" --json)
+expect_in("${OUT}" "\"outcome\":\"reached\"")
+file(READ "${WORK}/traj.csv" text)
+expect_in("${text}" "t,x,y,yaw_rad,v,steer_rad\n")
 
 # bad input: exit 2 naming the file
 file(WRITE "${WORK}/bad.yaml" "obstacles:\n  - {shape: triangle, waypoints: [[0, 0]]}\n")

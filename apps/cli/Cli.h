@@ -56,10 +56,17 @@ struct QueryArgs
     double timeLimit{10.0};
     bool smooth{false};
     std::string space{"se2"};
+    std::string rowOrder{"top"};  ///< --row-order: top (image rows) or bottom (ROS's data order)
+    std::string paramsFile;       ///< --params-file: planner, params, vehicle, space, time limit
+    const CLI::App *cmd{nullptr};  ///< the command, to tell options given from defaults
 };
 /// --map, --unknown-free, --planner (required or not), --start / --start-cell, --goal /
 /// --goal-cell, --vehicle, --param, --time-limit, --smooth, --space.
 void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired);
+/// Merges --params-file into @p q: the file's planner, vehicle, space and time limit where the
+/// command line gave none, its params unless --param sets the same name.
+/// Then, with @p plannerRequired, InputError when neither named a planner.
+void applyParamsFile(QueryArgs &q, bool plannerRequired);
 
 /// A query made concrete: the map, the vehicle, the setup and the poses.
 struct Query
@@ -87,8 +94,9 @@ ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query);
 /// "A,B[,C]" -> numbers; throws InputError naming the option.
 std::vector<double> parseNumbers(const std::string &text, const std::string &option, std::size_t minN, std::size_t maxN);
 /// A pose from --X (world X,Y[,YAW_DEG]) or --X-cell (COL,ROW[,DEG]); exactly one must be given.
+/// @p rowsFromBottom: ROW counts from the map origin's row (ROS's order), else from the image's top.
 Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,
-                bool &hasYaw);
+                bool &hasYaw, bool rowsFromBottom = false);
 /// "(x, y, yaw deg)".
 std::string describe(const Pose2 &p);
 /// Creates a folder (and its parents); InputError saying why not.

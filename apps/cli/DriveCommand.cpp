@@ -3,6 +3,7 @@
 #include "Cli.h"
 
 #include "gridcar/bench/PlanQuery.h"
+#include "gridcar/path/PathIO.h"
 #include "gridcar/render/Render.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"
@@ -24,7 +25,7 @@ namespace
 struct DriveOptions
 {
     QueryArgs query;           ///< map, planner, start / goal, vehicle, params, time limit, smooth
-    std::string pathCsv;       ///< drive this path (x,y[,yaw] CSV) instead of planning
+    std::string pathCsv;       ///< drive this path (CSV, YAML or JSON poses) instead of planning
     std::string scenario;      ///< moving obstacles (YAML)
     double dt{0.05};
     double xi{1.0}, eta{0.6}, rho0{1.5};  ///< potential-field gains (FollowerParams)
@@ -32,41 +33,6 @@ struct DriveOptions
     std::string png;
     std::string trajectoryCsv;
 };
-
-/// x,y[,yaw] rows after a header line; InputError naming the file and line.
-std::vector<Pose2> readPathCsv(const std::string &file)
-{
-    std::ifstream f(file);
-    if (!f) throw InputError(file + ": cannot open the path file");
-    std::vector<Pose2> path;
-    std::string line;
-    int n = 0;
-    while (std::getline(f, line))
-    {
-        ++n;
-        if (line.empty() || (n == 1 && line.find_first_of("0123456789") != 0 && line[0] != '-')) continue;
-        std::stringstream ss(line);
-        std::string item;
-        std::vector<double> v;
-        while (std::getline(ss, item, ','))
-        {
-            try
-            {
-                std::size_t used = 0;
-                v.push_back(std::stod(item, &used));
-            }
-            catch (const std::exception &)
-            {
-                throw InputError(file + ": line " + std::to_string(n) + ": '" + item + "' is not a number");
-            }
-        }
-        if (v.size() < 2 || v.size() > 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]))
-            throw InputError(file + ": line " + std::to_string(n) + ": expected x,y[,yaw] (finite numbers)");
-        path.push_back({v[0], v[1], v.size() == 3 ? v[2] : 0.0});
-    }
-    if (path.size() < 2) throw InputError(file + ": a path needs at least two points");
-    return path;
-}
 
 /// A picture of the path, the trajectory and the moving obstacles (their routes and where
 /// they were every 10 s), cropped to what was driven.
@@ -114,7 +80,7 @@ bool pathToDrive(const DriveOptions &o, Query &query, std::vector<Pose2> &path, 
 {
     if (!o.pathCsv.empty())
     {
-        path = readPathCsv(o.pathCsv);
+        path = readPath(o.pathCsv);
         if (!query.setup.checker->isValid(path.front()))
             throw InputError(o.pathCsv + ": the path starts " + describe(path.front()) + " off the map or in collision");
         j["plan"] = {{"path_file", o.pathCsv}};
@@ -148,7 +114,7 @@ int runDrive(const DriveOptions &o)
     if (!(o.dt > 0) || o.dt > 1.0) throw InputError("--dt must be in (0, 1] s");
     if (!(o.xi >= 0) || !(o.eta >= 0) || !(o.rho0 > 0) || !std::isfinite(o.xi + o.eta + o.rho0))
         throw InputError("--xi and --eta must be >= 0 and --rho0 > 0 (finite)");
-    if (o.pathCsv.empty() && o.query.planner.empty()) throw InputError("give --planner NAME (with --start / --goal) or --path path.csv");
+    if (o.pathCsv.empty() && o.query.planner.empty()) throw InputError("give --planner NAME (with --start / --goal) or --path FILE (.csv, .yaml or .json)");
     Query query = loadQuery(o.query, o.pathCsv.empty());
     Scenario sc;
     if (!o.scenario.empty()) sc = Scenario::load(o.scenario);
@@ -190,7 +156,7 @@ int runDrive(const DriveOptions &o)
     {
         std::ofstream f(o.trajectoryCsv);
         if (!f) throw InputError("cannot write " + o.trajectoryCsv);
-        f << "t,x,y,yaw,v,steer\n";
+        f << "t,x,y,yaw_rad,v,steer_rad\n";
         f.precision(10);
         for (const TrajectorySample &q : r.trajectory) f << q.t << "," << q.x << "," << q.y << "," << q.yaw << "," << q.v << "," << q.steer << "\n";
     }
@@ -205,7 +171,9 @@ Command addDriveCommand(CLI::App &app)
     auto *c = app.add_subcommand("drive", "Plan a path (or read one) and drive it with paper C's potential-field follower "
                                           "in the kinematic bicycle simulation, with optional moving obstacles");
     addQueryOptions(c, o->query, false);
-    c->add_option("--path", o->pathCsv, "Drive this path instead of planning: CSV x,y[,yaw] (as plan --out writes)");
+    c->add_option("--path", o->pathCsv,
+                  "Drive this path instead of planning: as plan --out writes it (.csv with a header x,y,yaw_deg or "
+                  "x,y,yaw_rad (yaw: radians); .yaml / .json {frame_id, angle_unit: deg | rad, poses: [{x, y, yaw}]})");
     c->add_option("--scenario", o->scenario,
                   "Moving obstacles (YAML: obstacles: [{shape, radius | size, waypoints, speed, start_time, loop}])");
     c->add_option("--dt", o->dt, "Simulation step, s")->capture_default_str();
@@ -216,9 +184,12 @@ Command addDriveCommand(CLI::App &app)
                 "Print one JSON object: outcome (reached | collided | stuck | timeout), reason, driving_time, path_length, "
                 "distance_driven, cross_track_mean, cross_track_max, min_clearance, recoveries, plan {...}");
     c->add_option("--png", o->png, "Picture of the path (blue), the trajectory (red) and the moving obstacles (orange)");
-    c->add_option("--out", o->trajectoryCsv, "Trajectory CSV: t,x,y,yaw,v,steer");
+    c->add_option("--out", o->trajectoryCsv, "Trajectory CSV: t (s), x, y (m), yaw_rad, v (m/s, negative in reverse), steer_rad");
     c->footer("Exit status: 0 reached, 3 collided / stuck / timeout (or no plan), 2 bad input, 1 internal error.");
-    return {c, [o] { return runDrive(*o); }};
+    return {c, [o] {
+                applyParamsFile(o->query, false);
+                return runDrive(*o);
+            }};
 }
 
 }  // namespace gridcar::cli

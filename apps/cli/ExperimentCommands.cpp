@@ -33,6 +33,9 @@ Command addBenchCommand(CLI::App &app)
     c->add_option("--time-limit", o->timeLimit, "Seconds per run (overrides the problem file)");
     c->add_option("--runs", o->runs, "Runs per planner (overrides the problem file)");
     c->add_flag("--no-database", o->noDatabase, "Write only the .log files (no database, no report)");
+    c->add_option("--params-file", o->paramsFile,
+                  "YAML file (planner, params, vehicle, space, time_limit): its vehicle, space and time limit replace the "
+                  "problem's, its params go to the problem's planners named like its planner (all when it names none)");
     c->add_option("--report-note", o->reportNote, "A paragraph put under the report's title (e.g. a link to another report)");
     c->add_option("--report-script", o->reportScript,
                   "The report script (default: " + bench::defaultReportScript() +

@@ -2,6 +2,7 @@
 #include "Cli.h"
 
 #include "gridcar/bench/Format.h"
+#include "gridcar/bench/ParamsFile.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/bench/PlanQuery.h"
@@ -58,14 +59,21 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
     addMapOption(cmd, q.map);
     std::string plannerList;
     for (const auto &n : plannerNames()) plannerList += (plannerList.empty() ? "" : ", ") + n;
-    auto *planner = cmd->add_option("--planner", q.planner, plannerList + " (or NAME+smooth)");
-    if (plannerRequired) planner->required();
+    cmd->add_option("--planner", q.planner,
+                    plannerList + " (or NAME+smooth; OMPL's own names too, any case)" +
+                        (plannerRequired ? std::string(". Required, here or in --params-file") : std::string()));
+    q.cmd = cmd;
     cmd->add_option("--start", q.start,
                     "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: free start heading for the grid "
                     "planners (OMPL planners start at the first yaw, in 5-degree steps from 0, at which the vehicle fits)");
-    cmd->add_option("--start-cell", q.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row)");
+    cmd->add_option("--start-cell", q.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row; see --row-order)");
     cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW_DEG]: with a yaw the car-lattice planners (and OMPL's) arrive at that heading (--param match_goal_heading=0 relaxes it); without one, at any heading where the vehicle fits");
     cmd->add_option("--goal-cell", q.goalCell, "Goal COL,ROW[,HEADING_DEG]");
+    cmd->add_option("--row-order", q.rowOrder,
+                    "Which row --start-cell / --goal-cell count from: top (row 0 = the image's first row) or bottom "
+                    "(row 0 = the map origin's row, as ROS's OccupancyGrid data and map_server count)")
+        ->check(CLI::IsMember({"top", "bottom"}))
+        ->capture_default_str();
     addVehicleOption(cmd, q.vehicle);
     cmd->add_option("--param", q.params, "NAME=VALUE: set a declared planner parameter (repeatable)");
     addTimeLimitOption(cmd, q.timeLimit, "Planning time limit, s");
@@ -79,6 +87,32 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
                     "then return drivable paths; reeds-shepp paths may reverse, their cusps counted)")
         ->check(CLI::IsMember({"se2", "dubins", "reeds-shepp"}))
         ->capture_default_str();
+    cmd->add_option("--params-file", q.paramsFile,
+                    "YAML file with any of planner, params {NAME: VALUE}, vehicle (preset or file, relative to it), space, "
+                    "time_limit; options given on the command line win (a --param over the file's value of that name)");
+}
+
+void applyParamsFile(QueryArgs &q, bool plannerRequired)
+{
+    if (!q.paramsFile.empty())
+    {
+        const bench::ParamsFile pf = bench::readParamsFile(q.paramsFile);
+        const auto given = [&q](const char *opt) { return q.cmd && q.cmd->count(opt) > 0; };
+        if (!pf.planner.empty() && !given("--planner")) q.planner = pf.planner;
+        if (!pf.vehicle.empty() && !given("--vehicle")) q.vehicle = pf.vehicle;
+        if (!pf.space.empty() && !given("--space")) q.space = pf.space;
+        if (pf.timeLimit > 0 && !given("--time-limit")) q.timeLimit = pf.timeLimit;
+        std::vector<std::string> params;  // the file's, except those the command line sets too
+        for (const auto &[name, value] : pf.params)
+        {
+            bool overridden = false;
+            for (const std::string &cli : q.params) overridden = overridden || cli.rfind(name + "=", 0) == 0;
+            if (!overridden) params.push_back(name + "=" + value);
+        }
+        params.insert(params.end(), q.params.begin(), q.params.end());
+        q.params = params;
+    }
+    if (plannerRequired && q.planner.empty()) throw InputError("give --planner NAME (or planner: in --params-file)");
 }
 
 Query loadQuery(const QueryArgs &q, bool withPoses)
@@ -90,8 +124,9 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
     query.vehicle = VehicleParams::fromNameOrFile(q.vehicle);
     if (withPoses)  // before the set-up: a malformed pose fails at once
     {
-        query.start = parsePose(q.start, q.startCell, "start", *query.grid, query.startYaw);
-        query.goal = parsePose(q.goal, q.goalCell, "goal", *query.grid, query.goalYaw);
+        const bool bottom = q.rowOrder == "bottom";
+        query.start = parsePose(q.start, q.startCell, "start", *query.grid, query.startYaw, bottom);
+        query.goal = parsePose(q.goal, q.goalCell, "goal", *query.grid, query.goalYaw, bottom);
     }
     SetupOptions so;
     so.space = parseSpaceKind(q.space);
@@ -156,7 +191,7 @@ std::vector<double> parseNumbers(const std::string &text, const std::string &opt
 }
 
 Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,
-                bool &hasYaw)
+                bool &hasYaw, bool rowsFromBottom)
 {
     if (world.empty() == cell.empty())
         throw InputError("give exactly one of --" + which + " X,Y[,YAW_DEG] and --" + which + "-cell COL,ROW[,HEADING_DEG]");
@@ -175,7 +210,8 @@ Pose2 parsePose(const std::string &world, const std::string &cell, const std::st
         if (std::abs(v[0]) > 1e9 || std::abs(v[1]) > 1e9 || !g.inBounds(int(v[0]), int(v[1])))
             throw InputError("--" + which + "-cell " + cell + " is outside the " + std::to_string(g.width()) + " x " +
                              std::to_string(g.height()) + " map");
-        p = {g.cellCenterX(int(v[0])), g.cellCenterY(int(v[1])), v.size() == 3 ? v[2] * M_PI / 180.0 : 0.0};
+        const int row = rowsFromBottom ? g.height() - 1 - int(v[1]) : int(v[1]);
+        p = {g.cellCenterX(int(v[0])), g.cellCenterY(row), v.size() == 3 ? v[2] * M_PI / 180.0 : 0.0};
         hasYaw = v.size() == 3;
     }
     p.yaw = wrapYaw(p.yaw);

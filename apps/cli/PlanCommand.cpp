@@ -2,6 +2,7 @@
 #include "Cli.h"
 
 #include "gridcar/bench/PlanQuery.h"
+#include "gridcar/path/PathIO.h"
 #include "gridcar/render/Render.h"
 
 #include <ompl/util/Console.h>
@@ -21,6 +22,7 @@ struct PlanOptions
     QueryArgs query;
     bool json{false};
     std::string outCsv;
+    std::string angleUnit{"deg"};
     std::string png;
 };
 
@@ -79,15 +81,6 @@ void printResult(const std::string &planner, const QueryResult &q)
     std::printf("\n");
 }
 
-void writeCsv(const std::string &file, const std::vector<Pose2> &path)
-{
-    std::ofstream f(file);
-    if (!f) throw InputError("cannot write " + file);
-    f << "x,y,yaw\n";
-    f.precision(10);
-    for (const Pose2 &p : path) f << p.x << "," << p.y << "," << p.yaw << "\n";
-}
-
 void drawPlan(const std::string &png, const Query &query, const ompl::base::Planner &planner, const QueryResult &q)
 {
     MapCanvas canvas(*query.grid);
@@ -101,6 +94,8 @@ void drawPlan(const std::string &png, const Query &query, const ompl::base::Plan
 
 int runPlan(const PlanOptions &o)
 {
+    if (!o.outCsv.empty() && pathFormatOf(o.outCsv).empty())
+        throw InputError("--out " + o.outCsv + ": the path file must end in .csv, .yaml, .yml or .json");
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     Query query = loadQuery(o.query, true);
     const ompl::base::PlannerPtr planner = queryPlanner(o.query, query);
@@ -123,7 +118,7 @@ int runPlan(const PlanOptions &o)
     }
     else
         printResult(o.query.planner, q);
-    if (!o.outCsv.empty()) writeCsv(o.outCsv, q.path);
+    if (!o.outCsv.empty()) writePath(o.outCsv, q.path, o.angleUnit == "rad" ? AngleUnit::Radians : AngleUnit::Degrees);
     if (!o.png.empty()) drawPlan(o.png, query, *planner, q);
     return q.status == ompl::base::PlannerStatus::EXACT_SOLUTION ? 0 : 3;
 }
@@ -141,12 +136,20 @@ Command addPlanCommand(CLI::App &app)
                 "min_path_distance, smoothing_time, min_clearance, time, drivable (and not_drivable_because), not_exact_because "
                 "(a grid planner stopped at its memory bound), "
                 "path [[x, y, yaw_rad], ...]");
-    c->add_option("--out", o->outCsv, "Write the path as CSV (x,y,yaw)");
+    c->add_option("--out", o->outCsv,
+                  "Write the path, the format from the extension: .csv (header x,y,yaw_deg), .yaml / .yml or .json "
+                  "({frame_id: map, angle_unit: deg, poses: [{x, y, yaw}]}); x, y in metres in the map frame");
+    c->add_option("--angle-unit", o->angleUnit, "Unit of the yaw in the --out file (named in the file)")
+        ->check(CLI::IsMember({"deg", "rad"}))
+        ->capture_default_str();
     c->add_option("--png", o->png, "Write a picture of the map, the path (before smoothing in orange) and the states the "
                                    "planner explored");
     c->footer("Exit status: 0 exact solution, 3 no exact solution (timeout / approximate), 2 bad input (including a start "
               "or goal off the map or in collision), 1 internal error.");
-    return {c, [o] { return runPlan(*o); }};
+    return {c, [o] {
+                applyParamsFile(o->query, true);
+                return runPlan(*o);
+            }};
 }
 
 }  // namespace gridcar::cli

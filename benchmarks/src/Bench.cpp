@@ -2,6 +2,8 @@
 // problem file, then the SQLite database (ompl_benchmark_statistics) and the report.
 #include "gridcar/bench/Bench.h"
 
+#include "gridcar/bench/ParamsFile.h"
+#include "ArenaBenchmark.h"
 #include "gridcar/bench/Problem.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
@@ -15,7 +17,6 @@
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"
 
-#include <ompl/config.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
@@ -29,7 +30,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #ifndef GRIDCAR_REPORT_SCRIPT
 #define GRIDCAR_REPORT_SCRIPT "scripts/bench_report.py"
@@ -130,58 +130,6 @@ void addRunProperties(const BenchWorld &w, const ompl::base::Planner &planner, c
     if (planner.getPlannerProgressProperties().count("expanded nodes INTEGER"))
         run["expanded nodes INTEGER"] = std::to_string(std::uint64_t(progressValue(planner, "expanded nodes INTEGER")));
 }
-
-/// OMPL's version from its headers' numbers: Debian's OMPL 1.5.2 reports an empty
-/// OMPL_VERSION, which its Benchmark writes into every log ("OMPL version " and nothing), and
-/// ompl_benchmark_statistics then stores the word "version" as the version.
-std::string omplVersion()
-{
-    return std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) + "." +
-           std::to_string(OMPL_PATCH_VERSION);
-}
-
-/// ompl::tools::Benchmark whose log reads well in Planner Arena: the OMPL version filled in,
-/// the set-up text without the default planner SimpleSetup allocates (and never runs), and
-/// progress tables only for planners whose runs lasted long enough to be sampled.
-class ArenaBenchmark : public ompl::tools::Benchmark
-{
-public:
-    using ompl::tools::Benchmark::Benchmark;
-
-    /// After benchmark(): the set-up text and the progress data as Planner Arena should see them.
-    void tidy(const ompl::geometric::SimpleSetup &ss)
-    {
-        std::stringstream setup;
-        ss.getSpaceInformation()->printSettings(setup);
-        ss.getProblemDefinition()->print(setup);
-        setup << "\nProperties of benchmarked planners:\n";
-        for (const auto &pl : planners_) pl->printProperties(setup);
-        exp_.setupInfo = setup.str();
-        for (auto &pe : exp_.planners)
-        {
-            bool sampled = false;
-            for (const auto &r : pe.runsProgressData) sampled = sampled || !r.empty();
-            if (!sampled) pe.runsProgressData.clear();  // no progress table rows, no empty plot
-        }
-    }
-
-    /// The log file, with "OMPL version" followed by the version.
-    void save(const std::string &file) const
-    {
-        std::stringstream text;
-        if (!saveResultsToStream(text)) throw std::runtime_error("cannot format the benchmark log " + file);
-        std::string all = text.str();
-        const std::string head = "OMPL version ";
-        if (all.compare(0, head.size(), head) == 0)
-        {
-            const std::size_t eol = all.find('\n');
-            all = head + omplVersion() + all.substr(eol);
-        }
-        std::ofstream out(file);
-        out << all;
-        if (!out) throw std::runtime_error("cannot write " + file);
-    }
-};
 
 /// A picture of a query's surroundings for the report; its entry in the paths file.
 void drawQuery(const BenchWorld &w, const std::string &outDir, const std::string &expName, const std::string &tag,
@@ -364,6 +312,7 @@ int runBench(const BenchOptions &o)
         std::fprintf(stderr, "[bench] %s: skipped: %s\n", o.problem.c_str(), skipWhy.c_str());
         return 0;
     }
+    if (!o.paramsFile.empty()) applyParamsFile(p, readParamsFile(o.paramsFile));
     if (o.timeLimit > 0)
     {
         p.timeLimit = o.timeLimit;

@@ -120,6 +120,12 @@ Problem readProblem(const std::string &file, const std::string &sharedDir, bool 
         }
         if (y["memory_limit_mb"]) p.memoryMb = y["memory_limit_mb"].as<double>();
         if (y["runs"]) p.runs = y["runs"].as<unsigned>();
+        if (y["row_order"])
+        {
+            const std::string ro = y["row_order"].as<std::string>();
+            if (ro != "top" && ro != "bottom") bad(p, "row_order must be top or bottom, got '" + ro + "'");
+            p.rowsFromBottom = ro == "bottom";
+        }
         if (!y["queries"] || !y["queries"].IsSequence() || y["queries"].size() == 0)
             bad(p, "'queries' must be a non-empty list of {start | start_cell, goal | goal_cell}");
         for (const auto &q : y["queries"])
@@ -174,7 +180,8 @@ Pose2 readPose(const Problem &p, const YAML::Node &q, const std::string &key, co
         if (a != std::floor(a) || b != std::floor(b) || a < 0 || b < 0 || a >= g.width() || b >= g.height())
             bad(p, where + key + "_cell [" + std::to_string(a) + ", " + std::to_string(b) + "] is not a cell of the " +
                        std::to_string(g.width()) + " x " + std::to_string(g.height()) + " map");
-        return {g.cellCenterX(int(a)), g.cellCenterY(int(b)), wrapYaw(yaw)};
+        const int row = p.rowsFromBottom ? g.height() - 1 - int(b) : int(b);
+        return {g.cellCenterX(int(a)), g.cellCenterY(row), wrapYaw(yaw)};
     }
     return {a, b, wrapYaw(yaw)};
 }

@@ -18,6 +18,10 @@ struct BenchOptions
     bool noDatabase{false};     ///< only the .log files
     std::string reportScript;   ///< empty: defaultReportScript()
     std::string reportNote;     ///< a paragraph under the report's title
+    /// --params-file: its vehicle, space and time limit replace the problem's (--time-limit
+    /// still wins); its params go to the problem's planners named like its planner (all of them
+    /// when it names none).
+    std::string paramsFile;
 };
 
 /// Benchmark of one problem file (progress on stderr); 0 also when the problem's shared map is

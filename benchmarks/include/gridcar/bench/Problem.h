@@ -29,13 +29,18 @@ struct Problem
     double delta{1.0};
     double resample{0.0};  ///< > 0: resample the map to this many metres per cell
     double timeLimit{5.0};
-    /// `time_limits: [1, 5, 10]`: every query is benchmarked once per limit (experiments
-    /// named NAME-qK-tT); empty: `time_limit` alone.
+    /// `time_limits: [1, 5, 10]`: every query is benchmarked once per limit (one experiment
+    /// per limit, all named NAME-qK, the limit their time_limit parameter; logs NAME-qK-tTs.log);
+    /// empty: `time_limit` alone.
     std::vector<double> timeLimits;
     /// `space: se2 | dubins | reeds-shepp` (makeGridSetup's SetupOptions::space).
     SpaceKind space{SpaceKind::SE2};
     double memoryMb{4096.0};
     unsigned runs{3};
+    /// `row_order: top | bottom`: which image row `start_cell` / `goal_cell` count from; top
+    /// (default): row 0 is the image's first row; bottom: row 0 is the map origin's row, as ROS
+    /// counts an OccupancyGrid's data.
+    bool rowsFromBottom{false};
     std::vector<YAML::Node> queries;
     std::vector<PlannerSpec> planners;
 };
