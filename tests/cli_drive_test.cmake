@@ -11,6 +11,7 @@ foreach(key "\"outcome\":\"reached\"" "\"driving_time\":" "\"path_length\":" "\"
             "\"cross_track_max\":" "\"min_clearance\":" "\"plan\":{" "\"planner\":\"corner-astar\"")
   expect_in("${OUT}" "${key}")
 endforeach()
+expect_in("${ERR}" "[drive] wrote ${WORK}/d.png in")
 foreach(f d.png traj.csv)
   if(NOT EXISTS "${WORK}/${f}")
     message(FATAL_ERROR "drive did not write ${f}")

@@ -17,8 +17,19 @@ expect_in("${OUT}" "\"cost\":13.07106781")  # 4 diagonals + 5 straight, by hand
 if(NOT EXISTS "${WORK}/p.png" OR NOT EXISTS "${WORK}/p.csv")
   message(FATAL_ERROR "plan did not write --png / --out")
 endif()
+# the picture is matplotlib's (axes, legend), announced on stderr with its time
+expect_in("${ERR}" "[plan] drawing ${WORK}/p.png")
+expect_in("${ERR}" "[plan] wrote ${WORK}/p.png in")
+file(READ "${WORK}/p.png" head LIMIT 24 HEX)
+if(NOT head MATCHES "^89504e47")
+  message(FATAL_ERROR "p.png is not a PNG: ${head}")
+endif()
 run_gridcar(0 plan ${M} --planner corner-astar --start 0.5,5.5 --goal 11.5,0.5 --param corner_weight_45=1.5)
 expect_in("${OUT}" "corner-astar: Exact solution")
+
+# a grid-cell search on a car space is told that it ignores the curves
+run_gridcar(0 plan --map embedded --planner astar-octile --vehicle paper-c-car --space reeds-shepp --start 504.365,384.271 --goal 587.805,345.829)
+expect_in("${ERR}" "warning: astar-octile searches the map's cells in straight steps: on --space reeds-shepp")
 
 # --row-order bottom counts rows from the map origin's row (ROS): cell (0,5) bottom = (0,0) top
 run_gridcar(0 plan ${M} --planner astar-octile --start-cell 0,5 --goal-cell 11,0 --row-order bottom --json)

@@ -2,9 +2,9 @@
 // follower in the kinematic simulation, with optional moving obstacles.
 #include "Cli.h"
 
+#include "gridcar/bench/Figure.h"
 #include "gridcar/bench/PlanQuery.h"
 #include "gridcar/path/PathIO.h"
-#include "gridcar/render/Render.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"
 
@@ -35,32 +35,34 @@ struct DriveOptions
 };
 
 /// A picture of the path, the trajectory and the moving obstacles (their routes and where
-/// they were every 10 s), cropped to what was driven.
-void drawDrive(const OccupancyGrid &grid, const std::vector<Pose2> &path, const DriveResult &r, const Scenario &sc,
+/// they were every 10 s), around what was driven.
+void drawDrive(const Query &query, const std::vector<Pose2> &path, const DriveResult &r, const Scenario &sc,
                const std::string &png)
 {
-    WorldBox box;
-    box.add(path);
-    for (const TrajectorySample &q : r.trajectory) box.add(q.x, q.y);
-    const OccupancyGrid crop = cropAround(grid, box, 8.0);
-    MapCanvas canvas(crop, 1200);
+    bench::Figure fig;
+    fig.title = std::string("drive: ") + DriveResult::outcomeName(r.outcome);
+    fig.vehicle = query.vehicle;
+    fig.start = path.front();
+    fig.goal = path.back();
+    fig.margin = 6.0;
+    fig.paths.push_back({"planned path", "tab:blue", path, false, 1.4});
+    std::vector<Pose2> driven;
+    for (const TrajectorySample &q : r.trajectory) driven.push_back({q.x, q.y, q.yaw});
+    if (driven.size() >= 2) fig.paths.push_back({"driven (simulation)", "tab:red", driven, true, 1.0});
+    if (!driven.empty()) fig.markers.push_back({"end of the drive", "tab:red", "X", "none", {{driven.back().x, driven.back().y}}});
     for (const MovingObstacle &o : sc.obstacles)
     {
-        canvas.polyline(o.waypoints, {230, 150, 40}, 1);
+        fig.markers.push_back({o.name + " route", "tab:orange", "", "--", o.waypoints});
+        bench::FigureMarkers at{o.name + " every 10 s", "tab:orange", "o", "none", {}};
         for (double t = 0; !r.trajectory.empty() && t <= r.trajectory.back().t; t += 10.0)
         {
             double ox, oy;
             o.positionAt(t, ox, oy);
-            canvas.disc(ox, oy, 4, {230, 150, 40});
+            at.points.push_back({ox, oy});
         }
+        fig.markers.push_back(at);
     }
-    std::vector<std::pair<double, double>> tp;
-    for (const TrajectorySample &q : r.trajectory) tp.push_back({q.x, q.y});
-    canvas.polyline(path, {40, 80, 220}, 2);
-    canvas.polyline(tp, {220, 30, 30}, 1);
-    if (!tp.empty()) canvas.disc(tp.back().first, tp.back().second, 5, {220, 30, 30});
-    canvas.disc(path.front().x, path.front().y, 5, {0, 0, 0});
-    canvas.save(png);
+    bench::drawFigure(*query.grid, fig, png, "drive");
 }
 
 nlohmann::json driveJson(const DriveResult &r)
@@ -160,7 +162,7 @@ int runDrive(const DriveOptions &o)
         f.precision(10);
         for (const TrajectorySample &q : r.trajectory) f << q.t << "," << q.x << "," << q.y << "," << q.yaw << "," << q.v << "," << q.steer << "\n";
     }
-    if (!o.png.empty()) drawDrive(*query.grid, path, r, sc, o.png);
+    if (!o.png.empty()) drawDrive(query, path, r, sc, o.png);
     return r.outcome == DriveResult::Outcome::Reached ? 0 : 3;
 }
 }  // namespace
@@ -183,7 +185,8 @@ Command addDriveCommand(CLI::App &app)
     c->add_flag("--json", o->json,
                 "Print one JSON object: outcome (reached | collided | stuck | timeout), reason, driving_time, path_length, "
                 "distance_driven, cross_track_mean, cross_track_max, min_clearance, recoveries, plan {...}");
-    c->add_option("--png", o->png, "Picture of the path (blue), the trajectory (red) and the moving obstacles (orange)");
+    c->add_option("--png", o->png, "Picture (matplotlib, axes in metres, scale bar, legend): the path (blue), the trajectory (red, the "
+                                   "vehicle's outline along it, reverse in purple), the moving obstacles (orange)");
     c->add_option("--out", o->trajectoryCsv, "Trajectory CSV: t (s), x, y (m), yaw_rad, v (m/s, negative in reverse), steer_rad");
     c->footer("Exit status: 0 reached, 3 collided / stuck / timeout (or no plan), 2 bad input, 1 internal error.");
     return {c, [o] {

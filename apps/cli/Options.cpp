@@ -6,9 +6,12 @@
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/bench/PlanQuery.h"
+#include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/planners/SmoothedPlanner.h"
 
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -130,6 +133,12 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
     }
     SetupOptions so;
     so.space = parseSpaceKind(q.space);
+    // the set-up of a large map (distance field, footprint checker) takes seconds: say so
+    const bool large = double(query.grid->width()) * query.grid->height() > 1.5e7;
+    const auto t0 = std::chrono::steady_clock::now();
+    if (large)
+        std::fprintf(stderr, "[gridcar] %d x %d cells: distance field and footprint checker ...\n", query.grid->width(),
+                     query.grid->height());
     try
     {
         query.setup = makeGridSetup(query.grid, query.vehicle, so);
@@ -138,6 +147,9 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
     {
         throw InputError(std::string("--space ") + q.space + ": " + e.what());
     }
+    if (large)
+        std::fprintf(stderr, "[gridcar] set-up done in %.1f s\n",
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     if (withPoses)
     {
         double yaw = 0;
@@ -158,8 +170,19 @@ std::string whyInvalid(const Query &query, const Pose2 &p, bool anyHeading)
 
 ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query)
 {
-    return configurePlanner(query.setup.ss->getSpaceInformation(),
-                            {q.planner, parsePlannerParams(q.params), !query.startYaw, q.smooth});
+    ompl::base::PlannerPtr p = configurePlanner(query.setup.ss->getSpaceInformation(),
+                                                {q.planner, parsePlannerParams(q.params), !query.startYaw, q.smooth});
+    // a search over the map's cells moves in straight cell steps whatever the space: on a car
+    // space its path is no Dubins / Reeds-Shepp path, and the user should hear it before the result
+    const ompl::base::Planner *inner = p.get();
+    if (const auto *sm = dynamic_cast<const SmoothedPlanner *>(inner)) inner = sm->inner().get();
+    if (const auto *gp = dynamic_cast<const GridPlanner *>(inner); gp && !gp->usesCarLattice() && q.space != "se2")
+        std::fprintf(stderr,
+                     "gridcar: warning: %s searches the map's cells in straight steps: on --space %s it ignores the "
+                     "curves, and its path is not a %s path (the car-lattice planners corner-astar and improved-astar "
+                     "and OMPL's planners use them)\n",
+                     q.planner.c_str(), q.space.c_str(), q.space == "dubins" ? "Dubins" : "Reeds-Shepp");
+    return p;
 }
 
 std::vector<double> parseNumbers(const std::string &text, const std::string &option, std::size_t minN, std::size_t maxN)

@@ -1,9 +1,9 @@
 // gridcar plan: one query with any planner; the path as text, JSON, CSV and a picture.
 #include "Cli.h"
 
+#include "gridcar/bench/Figure.h"
 #include "gridcar/bench/PlanQuery.h"
 #include "gridcar/path/PathIO.h"
-#include "gridcar/render/Render.h"
 
 #include <ompl/util/Console.h>
 
@@ -81,15 +81,27 @@ void printResult(const std::string &planner, const QueryResult &q)
     std::printf("\n");
 }
 
-void drawPlan(const std::string &png, const Query &query, const ompl::base::Planner &planner, const QueryResult &q)
+std::string formatLength(double metres)
 {
-    MapCanvas canvas(*query.grid);
-    canvas.tintCells(exploredCells(planner, *query.grid), {170, 200, 255});
-    if (q.smoothed) canvas.polyline(q.rawPath, {250, 170, 60}, 1);
-    canvas.polyline(q.path, {220, 30, 30}, 2);
-    canvas.disc(query.start.x, query.start.y, 4, {0, 160, 0});
-    canvas.disc(query.goal.x, query.goal.y, 4, {0, 0, 200});
-    canvas.save(png);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f m", metres);
+    return buf;
+}
+
+void drawPlan(const std::string &png, const Query &query, const ompl::base::Planner &planner, const QueryResult &q,
+              const std::string &name)
+{
+    bench::Figure fig;
+    fig.title = name + ": " + q.status.asString() + (q.path.empty() ? std::string() : " (" + formatLength(q.metrics.length) + ")");
+    fig.vehicle = query.vehicle;
+    fig.start = query.start;
+    fig.goal = query.goal;
+    fig.goalYaw = query.goalYaw;
+    if (!query.startYaw && !q.path.empty()) fig.start.yaw = q.path.front().yaw;  // the heading the planner chose
+    fig.tinted = exploredCells(planner, *query.grid);
+    if (q.smoothed) fig.paths.push_back({"before smoothing", "tab:orange", q.rawPath, false, 1.0});
+    fig.paths.push_back({name, "tab:blue", q.path, true, 1.8});
+    bench::drawFigure(*query.grid, fig, png, "plan");
 }
 
 int runPlan(const PlanOptions &o)
@@ -119,7 +131,7 @@ int runPlan(const PlanOptions &o)
     else
         printResult(o.query.planner, q);
     if (!o.outCsv.empty()) writePath(o.outCsv, q.path, o.angleUnit == "rad" ? AngleUnit::Radians : AngleUnit::Degrees);
-    if (!o.png.empty()) drawPlan(o.png, query, *planner, q);
+    if (!o.png.empty()) drawPlan(o.png, query, *planner, q, o.query.planner);
     return q.status == ompl::base::PlannerStatus::EXACT_SOLUTION ? 0 : 3;
 }
 }  // namespace
@@ -142,8 +154,10 @@ Command addPlanCommand(CLI::App &app)
     c->add_option("--angle-unit", o->angleUnit, "Unit of the yaw in the --out file (named in the file)")
         ->check(CLI::IsMember({"deg", "rad"}))
         ->capture_default_str();
-    c->add_option("--png", o->png, "Write a picture of the map, the path (before smoothing in orange) and the states the "
-                                   "planner explored");
+    c->add_option("--png", o->png, "Write a picture (matplotlib): the map around the path with axes in metres, a scale "
+                                   "bar and a legend; the path with the vehicle's outline along it (reverse segments in "
+                                   "purple), before smoothing in orange, the cells the planner explored in light blue; "
+                                   "start black, goal magenta as in gridcar bench");
     c->footer("Exit status: 0 exact solution, 3 no exact solution (timeout / approximate), 2 bad input (including a start "
               "or goal off the map or in collision), 1 internal error.");
     return {c, [o] {
