@@ -37,12 +37,17 @@ def query_of(ename):
     return m.group(1) if m else ename
 
 
-def outline(ax, x, y, yaw, veh, color):
-    """The vehicle rectangle at a pose (reference point: rear axle)."""
-    L, W, r = veh["length"], veh["width"], veh["rear_overhang"]
+def outline(ax, x, y, yaw, veh, colour):
+    """The vehicle's outline at a pose (reference point: rear axle): its polygon footprint, or
+    the rectangle."""
+    if veh.get("footprint"):
+        pts = [tuple(p) for p in veh["footprint"]] + [tuple(veh["footprint"][0])]
+    else:
+        length, width, rear = veh["length"], veh["width"], veh["rear_overhang"]
+        pts = [(-rear, -width / 2), (length - rear, -width / 2), (length - rear, width / 2), (-rear, width / 2),
+               (-rear, -width / 2)]
     c, s = math.cos(yaw), math.sin(yaw)
-    pts = [(-r, -W / 2), (L - r, -W / 2), (L - r, W / 2), (-r, W / 2), (-r, -W / 2)]
-    ax.plot([x + c * u - s * v for u, v in pts], [y + s * u + c * v for u, v in pts], color=color, lw=0.6, alpha=0.8)
+    ax.plot([x + c * u - s * v for u, v in pts], [y + s * u + c * v for u, v in pts], color=colour, lw=0.6, alpha=0.85)
 
 
 def summary(cur, exps, cols):

@@ -28,11 +28,15 @@ REVERSE_COLOUR = "tab:purple"
 
 
 def outline(ax, x, y, yaw, veh, colour, lw=0.7):
-    """The vehicle rectangle at a pose (reference point: rear axle)."""
-    length, width, rear = veh["length"], veh["width"], veh["rear_overhang"]
+    """The vehicle's outline at a pose (reference point: rear axle): its polygon footprint, or
+    the rectangle."""
+    if veh.get("footprint"):
+        pts = [tuple(p) for p in veh["footprint"]] + [tuple(veh["footprint"][0])]
+    else:
+        length, width, rear = veh["length"], veh["width"], veh["rear_overhang"]
+        pts = [(-rear, -width / 2), (length - rear, -width / 2), (length - rear, width / 2), (-rear, width / 2),
+               (-rear, -width / 2)]
     c, s = math.cos(yaw), math.sin(yaw)
-    pts = [(-rear, -width / 2), (length - rear, -width / 2), (length - rear, width / 2), (-rear, width / 2),
-           (-rear, -width / 2)]
     ax.plot([x + c * u - s * v for u, v in pts], [y + s * u + c * v for u, v in pts], color=colour, lw=lw, alpha=0.85)
 
 

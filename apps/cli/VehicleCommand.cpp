@@ -48,6 +48,7 @@ int runVehicle(const VehicleOptions &o)
         j["width"] = v.width;
         j["wheelbase"] = v.wheelbase;
         j["rear_overhang"] = v.rearOverhang;
+        if (v.hasPolygon()) j["footprint"] = v.footprint;
         j["max_steer_deg"] = v.maxSteerDeg;
         j["max_speed"] = v.maxSpeed;
         j["acceleration"] = v.acceleration;
@@ -70,6 +71,12 @@ int runVehicle(const VehicleOptions &o)
     else
         std::printf("  body: %.3g m x %.3g m, wheelbase %.3g m, rear overhang %.3g m\n", v.length, v.width, v.wheelbase,
                     v.rearOverhang);
+    if (v.hasPolygon())
+    {
+        std::printf("  footprint: polygon of %zu vertices (the body above is the rectangle around it):", v.footprint.size());
+        for (const auto &p : v.footprint) std::printf(" [%.3g, %.3g]", p[0], p[1]);
+        std::printf("\n");
+    }
     std::printf("  steering: max %.3g deg -> K_max %.4g 1/m, R_min %.4g m\n", v.maxSteerDeg, v.maxCurvature(),
                 v.minTurningRadius());
     std::printf("  speed: max %.4g m/s, acceleration %.4g m/s^2, deceleration %.4g m/s^2, lateral %.4g m/s^2, "

@@ -351,7 +351,8 @@ int runBench(const BenchOptions &o)
             }
     const VehicleParams &v = world.vehicle;
     if (!v.isPoint())
-        run.pathsJson["_vehicle"] = {{"length", v.length}, {"width", v.width}, {"rear_overhang", v.rearOverhang}};
+        run.pathsJson["_vehicle"] = {
+            {"length", v.length}, {"width", v.width}, {"rear_overhang", v.rearOverhang}, {"footprint", v.footprint}};
     const fs::path pathsFile = fs::path(o.outDir) / (p.name + run.tag + "-paths.json");
     std::ofstream(pathsFile) << run.pathsJson.dump() << "\n";
     const double el = std::chrono::duration<double>(Clock::now() - run.t0).count();

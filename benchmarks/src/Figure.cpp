@@ -88,7 +88,8 @@ void drawFigure(const OccupancyGrid &grid, const Figure &fig, const std::string 
     j["vehicle"] = fig.vehicle.isPoint() ? nlohmann::json(nullptr)
                                          : nlohmann::json{{"length", fig.vehicle.length},
                                                           {"width", fig.vehicle.width},
-                                                          {"rear_overhang", fig.vehicle.rearOverhang}};
+                                                          {"rear_overhang", fig.vehicle.rearOverhang},
+                                                          {"footprint", fig.vehicle.footprint}};
     j["start"] = {fig.start.x, fig.start.y, fig.start.yaw};
     j["goal"] = {fig.goal.x, fig.goal.y, fig.goalYaw ? nlohmann::json(fig.goal.yaw) : nlohmann::json(nullptr)};
     j["paths"] = nlohmann::json::array();

@@ -3,6 +3,7 @@
 #include "gridcar/core/Angles.h"
 
 #include "collision/detail/FclShapes.h"
+#include "collision/detail/Polygon.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/broadphase/default_broadphase_callbacks.h>
+#include <fcl/geometry/shape/convex.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/collision_object.h>
 
@@ -33,6 +35,29 @@ FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, st
                                              vehicle_.width / 2);
     if (vehicle_.isPoint()) return;
     body_ = makeBody(vehicle_, 0.0);
+    if (vehicle_.hasPolygon())
+    {
+        reach_ = 0;
+        for (const auto &p : vehicle_.footprint) reach_ = std::max(reach_, std::hypot(p[0], p[1]));
+        std::vector<detail::Pt> candidates;
+        for (const detail::Tri &t : detail::triangulate(vehicle_.footprint))
+        {
+            tris_.push_back({t.a[0], t.a[1], t.b[0], t.b[1], t.c[0], t.c[1]});
+            candidates.push_back({(t.a[0] + t.b[0] + t.c[0]) / 3, (t.a[1] + t.b[1] + t.c[1]) / 3});
+        }
+        // discs inside the polygon that prove a collision: at triangle centroids, the radius
+        // half the largest clearance any of them has, kept where they have that much
+        double best = 0;
+        std::vector<double> clear;
+        for (const auto &c : candidates)
+        {
+            clear.push_back(detail::inPolygon(c, vehicle_.footprint) ? detail::boundaryDistance(c, vehicle_.footprint) : 0.0);
+            best = std::max(best, clear.back());
+        }
+        provenR_ = best / 2;
+        for (std::size_t i = 0; i < candidates.size(); ++i)
+            if (clear[i] >= provenR_ && provenR_ > 0) provenDiscs_.push_back(candidates[i]);
+    }
 
     // Obstacle boundary cells: blocked cells with a non-blocked 4-neighbour inside the map.
     const OccupancyGrid &g = *grid_;
@@ -126,8 +151,56 @@ void FootprintChecker::corners(double x, double y, double yaw, double cx[4], dou
     }
 }
 
+namespace
+{
+/// FCL prisms (height 1) of the footprint's triangles, in the body frame.
+std::vector<std::unique_ptr<fcl::CollisionObjectd>> trianglePrisms(const std::vector<std::array<double, 6>> &tris)
+{
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> out;
+    for (const auto &t : tris)
+    {
+        auto verts = std::make_shared<std::vector<fcl::Vector3d>>();
+        for (double z : {-0.5, 0.5})
+            for (int i = 0; i < 3; ++i) verts->push_back(fcl::Vector3d(t[2 * i], t[2 * i + 1], z));
+        // faces: bottom (clockwise seen from above: outward down), top, three sides
+        auto faces = std::make_shared<std::vector<int>>(std::vector<int>{3, 0, 2, 1, 3, 3, 4, 5, 4, 0, 1, 4, 3, 4, 1, 2, 5, 4,
+                                                                         4, 2, 0, 3, 5});
+        auto geom = std::make_shared<fcl::Convexd>(verts, 5, faces);
+        out.push_back(std::make_unique<fcl::CollisionObjectd>(geom, fcl::Transform3d::Identity()));
+    }
+    return out;
+}
+}  // namespace
+
 bool FootprintChecker::exactBody(const Body &b, double x, double y, double yaw) const
 {
+    if (!tris_.empty())
+    {
+        // the polygon: one FCL prism per triangle, per thread and footprint
+        struct CachedPolygon
+        {
+            std::vector<std::array<double, 6>> tris;
+            std::vector<std::unique_ptr<fcl::CollisionObjectd>> objs;
+        };
+        thread_local CachedPolygon poly;
+        if (poly.tris != tris_)
+        {
+            poly.tris = tris_;
+            poly.objs = trianglePrisms(tris_);
+        }
+        fcl::Transform3d tf = fcl::Transform3d::Identity();
+        tf.translation() = fcl::Vector3d(x, y, 0.0);
+        tf.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+        for (auto &o : poly.objs)
+        {
+            o->setTransform(tf);
+            o->computeAABB();
+            fcl::DefaultCollisionData<double> data;
+            manager_->collide(o.get(), &data, fcl::DefaultCollisionFunction<double>);
+            if (data.result.isCollision()) return false;
+        }
+        return true;
+    }
     // one FCL box per thread and body size, moved to the pose (no allocation per check)
     struct Cached
     {
@@ -173,6 +246,7 @@ bool FootprintChecker::validBody(const Body &b, double x, double y, double yaw) 
         return true;
     }
     nExact_.fetch_add(1, std::memory_order_relaxed);
+    if (b.polygon) return polygonFree(b, x, y, cs, sn);
     const double off = b.length / 2 - b.rear;
     return rectFree(x + off * cs, y + off * sn, cs, sn, b.length / 2, b.width / 2);
 }
@@ -181,8 +255,17 @@ bool FootprintChecker::isValidExact(double x, double y, double yaw) const
 {
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
     if (vehicle_.isPoint()) return !cellBlockedAt(x, y);
-    const double off = vehicle_.centreOffset();
-    if (cellBlockedAt(x + off * std::cos(yaw), y + off * std::sin(yaw))) return false;  // centre inside an obstacle or off the map
+    // a point of the body inside an obstacle or off the map (a body wholly inside an obstacle
+    // touches no boundary box): the rectangle's centre, or a polygon's first triangle's centroid
+    double px = vehicle_.centreOffset(), py = 0.0;
+    if (!tris_.empty())
+    {
+        const auto &t = tris_.front();
+        px = (t[0] + t[2] + t[4]) / 3;
+        py = (t[1] + t[3] + t[5]) / 3;
+    }
+    const double cs = std::cos(yaw), sn = std::sin(yaw);
+    if (cellBlockedAt(x + cs * px - sn * py, y + sn * px + cs * py)) return false;
     return exactBody(body_, x, y, yaw);
 }
 
@@ -250,13 +333,16 @@ double FootprintChecker::clearance(double x, double y, double yaw) const
 {
     if (!isValid(x, y, yaw)) return 0.0;
     if (vehicle_.isPoint()) return field_->distance(x, y);
-    double cx[4], cy[4];
-    corners(x, y, yaw, cx, cy);
+    const auto body = vehicle_.outline();  // the rectangle's corners or the polygon
+    const double cs = std::cos(yaw), sn = std::sin(yaw);
+    const std::size_t n = body.size();
     double best = std::numeric_limits<double>::infinity();
     const double step = grid_->resolution() / 2;
-    for (int e = 0; e < 4; ++e)
+    for (std::size_t e = 0; e < n; ++e)
     {
-        const double x0 = cx[e], y0 = cy[e], x1 = cx[(e + 1) % 4], y1 = cy[(e + 1) % 4];
+        const auto &p = body[e], &q = body[(e + 1) % n];
+        const double x0 = x + cs * p[0] - sn * p[1], y0 = y + sn * p[0] + cs * p[1];
+        const double x1 = x + cs * q[0] - sn * q[1], y1 = y + sn * q[0] + cs * q[1];
         const int n = std::max(1, int(std::ceil(std::hypot(x1 - x0, y1 - y0) / step)));
         for (int i = 0; i < n; ++i)
         {

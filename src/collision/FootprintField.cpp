@@ -3,6 +3,8 @@
 /// (circumscribed circle, disc cover, inscribed discs) and the exact halving test.
 #include "gridcar/collision/FootprintChecker.h"
 
+#include "collision/detail/Polygon.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -20,6 +22,17 @@ FootprintChecker::Body FootprintChecker::makeBody(const VehicleParams &v, double
     b.discStep = b.length / b.discs;
     b.discR = std::hypot(b.width / 2, b.discStep / 2);
     b.firstDisc = -b.rear + b.discStep / 2;
+    b.margin = margin;
+    b.polygon = v.hasPolygon();
+    b.centreInside = true;
+    if (b.polygon)
+    {
+        // a blocked cell at the rectangle's centre proves a collision only if the centre is
+        // inside the polygon, and then only within the polygon's own distance to its boundary
+        const detail::Pt centre{v.centreOffset(), 0.0};
+        b.centreInside = detail::inPolygon(centre, v.footprint);
+        b.rIn = b.centreInside ? detail::boundaryDistance(centre, v.footprint) + margin : 0.0;
+    }
     return b;
 }
 
@@ -28,10 +41,10 @@ int FootprintChecker::quickBody(const Body &b, double x, double y, double yaw, d
     (void)yaw;
     const double off = b.length / 2 - b.rear;
     const Cell c = grid_->worldToCell(x + off * cs, y + off * sn);
-    if (grid_->isBlocked(c.col, c.row)) return 0;
+    if (grid_->isBlocked(c.col, c.row)) return b.centreInside ? 0 : -1;
     const double d = field_->cellDistance(c.col, c.row);
     if (d - 2.0 * halfDiag_ > b.rOut) return 1;
-    if (d + halfDiag_ < b.rIn) return 0;
+    if (b.centreInside && d + halfDiag_ < b.rIn) return 0;
     for (int k = 0; k < b.discs; ++k)
     {
         const double along = b.firstDisc + k * b.discStep;
@@ -72,6 +85,61 @@ bool FootprintChecker::rectFree(double cx, double cy, double cs, double sn, doub
     return true;
 }
 
+bool FootprintChecker::triangleFree(const std::array<double, 6> &t, int depth) const
+{
+    const double cx = (t[0] + t[2] + t[4]) / 3, cy = (t[1] + t[3] + t[5]) / 3;
+    const Cell c = grid_->worldToCell(cx, cy);
+    if (grid_->isBlocked(c.col, c.row)) return false;  // the centroid lies in a blocked cell
+    double reach = 0, longest = 0;
+    int e = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+        reach = std::max(reach, std::hypot(t[2 * i] - cx, t[2 * i + 1] - cy));
+        const int j = (i + 1) % 3;
+        const double l = std::hypot(t[2 * j] - t[2 * i], t[2 * j + 1] - t[2 * i + 1]);
+        if (l > longest) longest = l, e = i;
+    }
+    if (field_->cellDistance(c.col, c.row) - 2.0 * halfDiag_ > reach) return true;
+    const double res = grid_->resolution();
+    if (longest > res && depth < 40)
+    {
+        // halve at the longest edge's midpoint: two triangles, still counter-clockwise
+        const int i = e, j = (e + 1) % 3, k = (e + 2) % 3;
+        const double mx = (t[2 * i] + t[2 * j]) / 2, my = (t[2 * i + 1] + t[2 * j + 1]) / 2;
+        const std::array<double, 6> t1{t[2 * i], t[2 * i + 1], mx, my, t[2 * k], t[2 * k + 1]};
+        const std::array<double, 6> t2{mx, my, t[2 * j], t[2 * j + 1], t[2 * k], t[2 * k + 1]};
+        return triangleFree(t1, depth + 1) && triangleFree(t2, depth + 1);
+    }
+    const detail::Tri tri{{t[0], t[1]}, {t[2], t[3]}, {t[4], t[5]}};
+    const double x0 = std::min({t[0], t[2], t[4]}), x1 = std::max({t[0], t[2], t[4]});
+    const double y0 = std::min({t[1], t[3], t[5]}), y1 = std::max({t[1], t[3], t[5]});
+    const Cell lo = grid_->worldToCell(x0, y1), hi = grid_->worldToCell(x1, y0);
+    for (int row = std::min(lo.row, hi.row) - 1; row <= std::max(lo.row, hi.row) + 1; ++row)
+        for (int col = std::min(lo.col, hi.col) - 1; col <= std::max(lo.col, hi.col) + 1; ++col)
+            if (grid_->isBlocked(col, row) &&
+                detail::triangleMeetsSquare(tri, grid_->cellCenterX(col), grid_->cellCenterY(row), res / 2))
+                return false;
+    return true;
+}
+
+bool FootprintChecker::polygonFree(const Body &b, double x, double y, double cs, double sn) const
+{
+    for (const auto &bt : tris_)
+    {
+        detail::Tri tri{{bt[0], bt[1]}, {bt[2], bt[3]}, {bt[4], bt[5]}};
+        tri = detail::grown(tri, b.margin);
+        const detail::Pt v[3] = {tri.a, tri.b, tri.c};
+        std::array<double, 6> w{};
+        for (int i = 0; i < 3; ++i)
+        {
+            w[2 * i] = x + cs * v[i][0] - sn * v[i][1];
+            w[2 * i + 1] = y + sn * v[i][0] + cs * v[i][1];
+        }
+        if (!triangleFree(w, 0)) return false;
+    }
+    return true;
+}
+
 const FootprintChecker::Body &FootprintChecker::bodyFor(double margin) const
 {
     // the car lattice asks for two margins over and over: the last two bodies per thread, keyed
@@ -79,19 +147,23 @@ const FootprintChecker::Body &FootprintChecker::bodyFor(double margin) const
     struct Slot
     {
         double length{-1}, width{-1}, rear{-1}, margin{-1};
+        std::vector<std::array<double, 2>> footprint;
         Body body{};
     };
     thread_local Slot slots[2];
     thread_local int next = 0;
     const VehicleParams &v = vehicle_;
     for (Slot &s : slots)
-        if (s.margin == margin && s.length == v.length && s.width == v.width && s.rear == v.rearOverhang) return s.body;
+        if (s.margin == margin && s.length == v.length && s.width == v.width && s.rear == v.rearOverhang &&
+            s.footprint == v.footprint)
+            return s.body;
     Slot &s = slots[next];
     next = 1 - next;
     s.length = v.length;
     s.width = v.width;
     s.rear = v.rearOverhang;
     s.margin = margin;
+    s.footprint = v.footprint;
     s.body = makeBody(vehicle_, margin);
     return s.body;
 }
@@ -101,6 +173,11 @@ std::vector<std::array<double, 2>> FootprintChecker::inscribedDiscOffsets(double
     std::vector<std::array<double, 2>> out;
     if (vehicle_.isPoint()) return {{0.0, 0.0}};
     const double cs = std::cos(yaw), sn = std::sin(yaw);
+    if (vehicle_.hasPolygon())
+    {
+        for (const auto &d : provenDiscs_) out.push_back({cs * d[0] - sn * d[1], sn * d[0] + cs * d[1]});
+        return out;
+    }
     const double L = vehicle_.length, W = vehicle_.width, rear = vehicle_.rearOverhang;
     const double r = std::min(L, W) / 2;
     // centres along the longer axis where the disc of radius r stays inside the rectangle
@@ -122,7 +199,7 @@ std::vector<std::array<double, 2>> FootprintChecker::inscribedDiscOffsets(double
 bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets) const
 {
     if (!std::isfinite(x) || !std::isfinite(y)) return true;
-    const double r = vehicle_.isPoint() ? 0.0 : std::min(vehicle_.length, vehicle_.width) / 2;
+    const double r = vehicle_.isPoint() ? 0.0 : vehicle_.hasPolygon() ? provenR_ : std::min(vehicle_.length, vehicle_.width) / 2;
     for (const auto &o : offsets)
     {
         const Cell c = grid_->worldToCell(x + o[0], y + o[1]);

@@ -3,6 +3,7 @@
 #include "gridcar/core/Errors.h"
 #include "gridcar/core/Files.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -42,9 +43,22 @@ void VehicleParams::validate() const
     if ((length == 0.0) != (width == 0.0))
         throw std::invalid_argument("vehicle length and width must both be zero (point) or both positive");
     check(wheelbase, "wheelbase", true);
-    check(rearOverhang, "rear_overhang", false);
-    if (!isPoint() && rearOverhang > length)
-        throw std::invalid_argument("vehicle rear_overhang must not exceed length");
+    if (hasPolygon())
+    {
+        // the rectangle around the polygon, as setFootprint() set it (the reference point may lie outside)
+        VehicleParams box;
+        box.setFootprint(footprint);
+        if (std::abs(box.length - length) > 1e-9 || std::abs(box.width - width) > 1e-9 ||
+            std::abs(box.rearOverhang - rearOverhang) > 1e-9)
+            throw std::invalid_argument("vehicle length, width and rear_overhang must be the footprint's bounding box "
+                                        "(set them with setFootprint)");
+    }
+    else
+    {
+        check(rearOverhang, "rear_overhang", false);
+        if (!isPoint() && rearOverhang > length)
+            throw std::invalid_argument("vehicle rear_overhang must not exceed length");
+    }
     check(maxSteerDeg, "max_steer_deg", true);
     if (maxSteerDeg >= 90.0) throw std::invalid_argument("vehicle max_steer_deg must be below 90");
     check(maxSteerRateDeg, "max_steer_rate_deg", true);
@@ -156,6 +170,8 @@ VehicleParams VehicleParams::scaled(double k) const
     VehicleParams v = *this;
     for (double *len : {&v.length, &v.width, &v.wheelbase, &v.rearOverhang})
         *len *= k;
+    for (auto &p : v.footprint)
+        for (double &c : p) c *= k;
     for (double *rate : {&v.maxSpeed, &v.maxReverseSpeed, &v.acceleration, &v.deceleration, &v.maxLateralAccel, &v.cornerSpeed45,
                          &v.cornerSpeed90, &v.cornerSpeed135})
         *rate *= k;
@@ -165,6 +181,42 @@ VehicleParams VehicleParams::scaled(double k) const
     v.name = name.str();
     return v;
 }
+
+namespace
+{
+/// Nav2's footprint: a list [[x, y], ...] or the same as a string ("[[0.5, 0.3], [0.5, -0.3], ...]").
+std::vector<std::array<double, 2>> readFootprint(const std::string &file, YAML::Node fp)
+{
+    if (fp.IsScalar())
+    {
+        try
+        {
+            fp = YAML::Load(fp.Scalar());
+        }
+        catch (const YAML::Exception &)
+        {
+            throw MapLoadError(file, "field 'footprint' must be a list of [x, y] points");
+        }
+    }
+    if (!fp.IsSequence()) throw MapLoadError(file, "field 'footprint' must be a list of [x, y] points");
+    std::vector<std::array<double, 2>> poly;
+    for (std::size_t i = 0; i < fp.size(); ++i)
+    {
+        const YAML::Node p = fp[i];
+        if (!p.IsSequence() || p.size() != 2)
+            throw MapLoadError(file, "footprint point " + std::to_string(i + 1) + " must be [x, y]");
+        try
+        {
+            poly.push_back({p[0].as<double>(), p[1].as<double>()});
+        }
+        catch (const YAML::Exception &)
+        {
+            throw MapLoadError(file, "footprint point " + std::to_string(i + 1) + " must hold two numbers");
+        }
+    }
+    return poly;
+}
+}  // namespace
 
 VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
 {
@@ -212,11 +264,13 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
                   {"corner_speed_45", &v.cornerSpeed45},
                   {"corner_speed_90", &v.cornerSpeed90},
                   {"corner_speed_135", &v.cornerSpeed135}};
+    bool boxGiven = false;
     for (const auto &kv : root)
     {
         if (!kv.first.IsScalar()) throw MapLoadError(s, "field names must be plain words, not lists or mappings");
         const std::string key = kv.first.as<std::string>();
-        if (key == "preset" || key == "name") continue;
+        if (key == "preset" || key == "name" || key == "footprint") continue;
+        if (key == "length" || key == "width" || key == "rear_overhang") boxGiven = true;
         bool known = false;
         if (key == "scale")
         {
@@ -245,6 +299,20 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
                 }
             }
         if (!known) throw MapLoadError(s, "unknown vehicle field '" + key + "'");
+    }
+    if (const YAML::Node fp = root["footprint"])
+    {
+        if (boxGiven)
+            throw MapLoadError(s, "give either 'footprint' or length / width / rear_overhang: the footprint sets them");
+        v.footprint.clear();
+        try
+        {
+            v.setFootprint(readFootprint(s, fp));
+        }
+        catch (const std::invalid_argument &e)
+        {
+            throw MapLoadError(s, e.what());
+        }
     }
     if (scale != 1.0)
     {

@@ -1,6 +1,6 @@
 #pragma once
 /// @file FootprintChecker.h
-/// @brief Body-contour collision checking of a vehicle rectangle on an occupancy grid (FCL).
+/// @brief Body-contour collision checking of a vehicle rectangle or polygon on an occupancy grid (FCL).
 
 #include "gridcar/core/Pose2.h"
 #include "gridcar/vehicle/VehicleParams.h"
@@ -49,6 +49,15 @@ namespace gridcar
  * on a blocked cell, which the fast path catches, so boundary cells suffice.
  *
  * The "point" vehicle checks only the cell under the point.
+ *
+ * A polygon footprint (VehicleParams::setFootprint, convex or not) is checked exactly too: the
+ * quick verdicts of the rectangle around it still prove it free; a collision is only concluded
+ * from the rectangle's centre when that centre lies inside the polygon (with the polygon's own
+ * inscribed radius there); what they leave undecided is settled per triangle of the polygon's
+ * triangulation, halved until proven free by the distance field or a cell long and then tested
+ * against each blocked cell square by separating axes. isValidExact() collides FCL prisms of
+ * the triangles with the obstacle boxes. Grown bodies (isValidInflated) grow every triangle by
+ * the margin (mitred), which contains the polygon grown by it.
  *
  * @par External documentation
  * J. Pan, S. Chitta, D. Manocha, FCL: A General Purpose Library for Collision and Proximity
@@ -151,6 +160,9 @@ private:
         double length, width, rear;  ///< rear = distance from the reference point to the back
         double rIn, rOut, discR, discStep, firstDisc;
         int discs;
+        bool polygon;       ///< a polygon footprint: the rectangle is only its bounding box
+        bool centreInside;  ///< the rectangle's centre lies inside the polygon (rIn: its distance to the boundary)
+        double margin;
     };
     static Body makeBody(const VehicleParams &v, double margin);
     const Body &bodyFor(double margin) const;
@@ -162,12 +174,22 @@ private:
     /// and half-width b, by recursive halving against the distance field down to a cell, then
     /// a separating-axis test against each blocked cell square in reach.
     bool rectFree(double cx, double cy, double cs, double sn, double a, double b) const;
+    /// Exact test of a world triangle (x0, y0, x1, y1, x2, y2, counter-clockwise) by halving
+    /// at its longest edge against the distance field, then separating axes per blocked cell.
+    bool triangleFree(const std::array<double, 6> &t, int depth) const;
+    /// The polygon footprint (grown by the body's margin) at a pose, exactly.
+    bool polygonFree(const Body &b, double x, double y, double cs, double sn) const;
 
     std::shared_ptr<const OccupancyGrid> grid_;
     std::shared_ptr<const DistanceField> field_;
     VehicleParams vehicle_;
     double rIn_{0}, rOut_{0}, halfDiag_{0}, reach_{0};
     Body body_{};
+    /// A polygon footprint: its triangles in the body frame (x0, y0, x1, y1, x2, y2, CCW), the
+    /// discs inside it that prove a collision (provenBlocked) and their radius.
+    std::vector<std::array<double, 6>> tris_;
+    std::vector<std::array<double, 2>> provenDiscs_;
+    double provenR_{0};
     double sweepFraction_{0.5};
     std::size_t boxCount_{0};
     std::unique_ptr<fcl::BroadPhaseCollisionManager<double>> manager_;

@@ -2,6 +2,7 @@
 /// @file VehicleParams.h
 /// @brief Vehicle geometry and dynamics limits, with the papers' presets.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,12 @@ namespace gridcar
  * Body frame: x forward, y left. The rectangle spans x in [-rearOverhang, length - rearOverhang]
  * and y in [-width/2, width/2]. A vehicle with length == 0 and width == 0 is a point (plain
  * grid semantics: valid iff the cell under the point is free).
+ *
+ * A polygon footprint (Nav2's `footprint: [[x, y], ...]`, in the body frame, convex or not)
+ * replaces the rectangle as the body: setFootprint() checks it and sets length, width and
+ * rearOverhang to the rectangle around it (symmetric about the x axis), which the follower, the
+ * simulation and the pictures' fast paths use as a conservative stand-in; collision checking
+ * (FootprintChecker) is exact for the polygon itself.
  */
 struct VehicleParams
 {
@@ -40,7 +47,22 @@ struct VehicleParams
     double cornerSpeed90{0.0};
     double cornerSpeed135{0.0};
 
+    /// The polygon footprint (counter-clockwise, body frame); empty: the rectangle.
+    std::vector<std::array<double, 2>> footprint;
+
     bool isPoint() const { return length <= 0.0 && width <= 0.0; }
+    bool hasPolygon() const { return !footprint.empty(); }
+    /**
+     * @brief Sets the polygon footprint: at least 3 finite vertices in the body frame, a simple
+     * polygon (no edge crossing another, no repeated vertex) of positive area, in either
+     * orientation (stored counter-clockwise); length, width and rearOverhang become the
+     * rectangle around it. The reference point need not lie inside. Throws
+     * std::invalid_argument naming what is wrong.
+     */
+    void setFootprint(std::vector<std::array<double, 2>> polygon);
+    /// The body's outline, counter-clockwise in the body frame: the polygon, or the rectangle's
+    /// four corners from rear-right; empty for a point.
+    std::vector<std::array<double, 2>> outline() const;
     /// K_max = tan(phi_max) / wheelbase (paper I eq. 2), 1/m; +inf for a point vehicle.
     double maxCurvature() const;
     /// R_min = 1 / K_max, m.
