@@ -82,6 +82,8 @@ int runInfo(const InfoOptions &o)
 {
     OccupancyGrid grid = loadMapArgument(o.map);
     const OccupancyGrid::Counts counts = grid.counts();
+    std::size_t costCells = 0;  // free cells of the cost layer with a cost above 0
+    for (std::uint8_t c : grid.costs()) costCells += c > 0 ? 1 : 0;
     grid.setUnknownIsFree(o.unknownFree);
     std::unique_ptr<DistanceField> field;
     if (grid.size() <= kInfoFieldCells) field = std::make_unique<DistanceField>(grid);
@@ -96,6 +98,7 @@ int runInfo(const InfoOptions &o)
         j["free"] = counts.free;
         j["occupied"] = counts.occupied;
         j["unknown"] = counts.unknown;
+        if (grid.hasCosts()) j["cost_cells"] = costCells;
         j["max_clearance"] = field ? nlohmann::json(field->maxDistance()) : nlohmann::json(nullptr);
         j["memory_mb"] = memory;
         std::cout << j.dump() << "\n";
@@ -110,6 +113,10 @@ int runInfo(const InfoOptions &o)
     std::printf("cells      free %zu (%.1f %%), occupied %zu (%.1f %%), unknown %zu (%.1f %%)\n", counts.free,
                 100.0 * counts.free / n, counts.occupied, 100.0 * counts.occupied / n, counts.unknown,
                 100.0 * counts.unknown / n);
+    if (grid.hasCosts())
+        std::printf("cost layer %zu cells with a cost above 0 (map_server scale / raw values; used by the car-lattice "
+                    "planners with --param cost_layer_weight=W)\n",
+                    costCells);
     if (field)
         std::printf("clearance  max %.2f m (unknown counted as %s)\n", field->maxDistance(),
                     o.unknownFree ? "free" : "occupied");

@@ -34,6 +34,8 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     q.reversePenalty = options.reversePenalty;
     q.cuspPenalty = options.cuspPenalty;
     q.curveWithin = options.curveWithin;
+    q.layer = options.layer;
+    q.layerWeight = options.layerWeight;
     q.goal = goal.pose;
     switch (goal.kind)
     {

@@ -141,10 +141,22 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     if (car)
     {
         const std::unique_ptr<LatticeCostModel> cost = carCost();
-        const CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty,
-                                       cuspPenalty() * cost->costPerMetreOfPenalty(),
-                                       params_.curveHeuristic ? 30.0 * carSearch()->lattice().config().turnRadius : 0.0,
-                                       curvatureRate(), 1.0 / turningRadius()};
+        CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty,
+                                 cuspPenalty() * cost->costPerMetreOfPenalty(),
+                                 params_.curveHeuristic ? 30.0 * carSearch()->lattice().config().turnRadius : 0.0,
+                                 curvatureRate(), 1.0 / turningRadius()};
+        if (params_.costLayerWeight > 0)
+        {
+            if (checker_ && checker_->grid().hasCosts())
+            {
+                options.layer = &checker_->grid();
+                options.layerWeight = params_.costLayerWeight;
+            }
+            else
+                OMPL_WARN("%s: cost_layer_weight is set but the map has no cost layer (a map_server map in scale or "
+                          "raw mode, on gridcar's validity checker): it has no effect",
+                          getName().c_str());
+        }
         run = car_.solve(si_, start, params_.freeStartHeading, options, goal_, *cost, cancelled, support_.progress());
     }
     else

@@ -29,6 +29,16 @@ void GridPlanner::declareCarLatticeParams()
                        "0,1");
     declareParam<double>("curvature_rate", this, &GridPlanner::setCurvatureRate, &GridPlanner::curvatureRateParam,
                          "0.:0.05:100.");
+    declareParam<double>("cost_layer_weight", this, &GridPlanner::setCostLayerWeight, &GridPlanner::costLayerWeight,
+                         "0.:0.5:100.");
+}
+
+void GridPlanner::setCostLayerWeight(double w)
+{
+    if (!std::isfinite(w) || w < 0.0 || w > 1000.0)
+        throw std::invalid_argument(getName() + ": cost_layer_weight must be in [0, 1000] (extra metres per metre at cost 252)");
+    params_.costLayerWeight = w;
+    parameterSet("cost_layer_weight");
 }
 
 void GridPlanner::setContinuousCurvature(bool on)

@@ -85,24 +85,29 @@ OccupancyGrid imageToGrid(const Image &img, const RosMapMeta &meta, const std::s
                 int sum = 0;
                 for (int k = 0; k < colourChannels; ++k) sum += p[k];
                 double v = double(sum) / colourChannels;
-                if (meta.mode == RosMapMode::Raw)
+                // an occupancy between the thresholds: unknown in trinary mode, a free cell with a
+                // cost in scale and raw modes (map_server's intermediate values)
+                const auto classify = [&](double occ) {
+                    if (occ > meta.occupiedThresh) return CellState::Occupied;
+                    if (occ < meta.freeThresh) return CellState::Free;
+                    if (meta.mode == RosMapMode::Trinary) return CellState::Unknown;
+                    const double span = meta.occupiedThresh - meta.freeThresh;
+                    const double c = span > 0 ? 252.0 * (occ - meta.freeThresh) / span : 252.0;
+                    grid.setCost(x, y, std::uint8_t(std::lround(std::clamp(c, 0.0, 252.0))));
+                    return CellState::Free;
+                };
+                if (meta.mode == RosMapMode::Raw && meta.costmapValues)
                 {
-                    if (v > 100.0) s = CellState::Unknown;
-                    else
-                    {
-                        const double occ = v / 100.0;
-                        s = occ > meta.occupiedThresh ? CellState::Occupied :
-                            occ < meta.freeThresh     ? CellState::Free :
-                                                        CellState::Unknown;
-                    }
+                    const int iv = int(std::lround(v));
+                    s = iv >= 255 ? CellState::Unknown : iv >= 253 ? CellState::Occupied : CellState::Free;
+                    if (iv > 0 && iv <= 252) grid.setCost(x, y, std::uint8_t(iv));
                 }
+                else if (meta.mode == RosMapMode::Raw)
+                    s = v > 100.0 ? CellState::Unknown : classify(v / 100.0);
                 else
                 {
                     if (meta.negate) v = 255.0 - v;
-                    const double occ = (255.0 - v) / 255.0;
-                    s = occ > meta.occupiedThresh ? CellState::Occupied :
-                        occ < meta.freeThresh     ? CellState::Free :
-                                                    CellState::Unknown;
+                    s = classify((255.0 - v) / 255.0);
                 }
             }
             cells[grid.index(x, y)] = s;
@@ -173,6 +178,15 @@ OccupancyGrid loadRosMap(const std::string &yamlPath, RosMapMeta *metaOut)
         else if (m == "scale") meta.mode = RosMapMode::Scale;
         else if (m == "raw") meta.mode = RosMapMode::Raw;
         else throw MapLoadError(yamlPath, "unknown mode '" + m + "' (expected trinary, scale or raw)");
+    }
+    if (root["values"])
+    {
+        const std::string v = root["values"].IsScalar() ? root["values"].Scalar() : "";
+        if (v != "occupancy" && v != "costmap")
+            throw MapLoadError(yamlPath, "key 'values' must be occupancy or costmap, got '" + printable(v) + "'");
+        if (v == "costmap" && meta.mode != RosMapMode::Raw)
+            throw MapLoadError(yamlPath, "'values: costmap' needs 'mode: raw' (the pixels are then Nav2 costmap values)");
+        meta.costmapValues = v == "costmap";
     }
     Image img;
     try

@@ -79,8 +79,20 @@ OccupancyGrid OccupancyGrid::cropped(int col0, int row0, int w, int h) const
     out.setOrigin(originX_ + c0 * resolution_, originY_ + (height_ - r1) * resolution_, originYaw_);
     out.setUnknownIsFree(unknownIsFree_);
     for (int r = r0; r < r1; ++r)
-        for (int c = c0; c < c1; ++c) out.set(c - c0, r - r0, at(c, r));
+        for (int c = c0; c < c1; ++c)
+        {
+            out.set(c - c0, r - r0, at(c, r));
+            if (!costs_.empty() && costs_[index(c, r)]) out.setCost(c - c0, r - r0, costs_[index(c, r)]);
+        }
     return out;
+}
+
+void OccupancyGrid::setCost(int col, int row, std::uint8_t c)
+{
+    if (!inBounds(col, row)) throw std::invalid_argument("setCost: cell outside the map");
+    if (c > 252) throw std::invalid_argument("setCost: costs are 0..252 (253-254 are obstacles, 255 unknown)");
+    if (costs_.empty()) costs_.assign(cells_.size(), 0);
+    costs_[index(col, row)] = c;
 }
 
 OccupancyGrid OccupancyGrid::resampled(double newResolution) const
@@ -119,11 +131,13 @@ OccupancyGrid OccupancyGrid::resampled(double newResolution) const
             const int srcU0 = std::max(0, int(std::floor(u0 + 1e-9)));
             const int srcU1 = std::min(width_ - 1, int(std::ceil(u1 - 1e-9)) - 1);
             bool occ = false, unk = false;
+            std::uint8_t worst = 0;  // the cost layer: the highest cost under the new cell
             for (int sv = srcV0; sv <= srcV1 && !occ; ++sv)
             {
                 const int srow = height_ - 1 - sv;
                 for (int su = srcU0; su <= srcU1; ++su)
                 {
+                    if (!costs_.empty()) worst = std::max(worst, costs_[index(su, srow)]);
                     const CellState s = at(su, srow);
                     if (s == CellState::Occupied) { occ = true; break; }
                     if (s == CellState::Unknown) unk = true;
@@ -132,6 +146,7 @@ OccupancyGrid OccupancyGrid::resampled(double newResolution) const
             // cells past the source extent (partial last row/column) count as occupied
             if (srcU1 < srcU0 || srcV1 < srcV0) occ = true;
             out.set(c, r, occ ? CellState::Occupied : (unk ? CellState::Unknown : CellState::Free));
+            if (worst) out.setCost(c, r, worst);
         }
     }
     return out;

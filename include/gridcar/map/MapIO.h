@@ -29,6 +29,9 @@ struct RosMapMeta
     double occupiedThresh{0.65};
     double freeThresh{0.196};
     RosMapMode mode{RosMapMode::Trinary};
+    /// `values: costmap` (gridcar's key, raw mode only): the pixels are Nav2 costmap_2d values
+    /// (0..252 costs, 253-254 lethal, 255 unknown) instead of occupancy percentages.
+    bool costmapValues{false};
 };
 
 /**
@@ -40,6 +43,13 @@ struct RosMapMeta
  * p = (255 - v) / 255 (v / 255 with negate); occupied if p > occupied_thresh, free if
  * p < free_thresh, else unknown. A fully transparent pixel (alpha 0) is unknown. In `raw`
  * mode the value is the occupancy in percent (0..100), anything above 100 is unknown.
+ *
+ * Cost layer (OccupancyGrid::cost()): in `scale` and `raw` modes a p between free_thresh and
+ * occupied_thresh is, as map_server's scale mode means it, a free cell with a traversal cost
+ * 252 (p - free_thresh) / (occupied_thresh - free_thresh) instead of unknown. With
+ * `values: costmap` (raw mode) the pixels are Nav2 costmap values: 0..252 a free cell of that
+ * cost, 253-254 occupied (inscribed / lethal), 255 unknown. `trinary` (the default) has no cost
+ * layer and reads as before.
  * Throws MapLoadError("<file>: <reason>") for any malformed input.
  */
 OccupancyGrid loadRosMap(const std::string &yamlPath, RosMapMeta *metaOut = nullptr);

@@ -108,6 +108,19 @@ public:
     /// Cell counts by state as stored (unknown is not merged into occupied).
     Counts counts() const;
 
+    /**
+     * @brief The cost layer: a traversal cost 0..252 per cell (Nav2 costmap_2d's scale: 0 free
+     * space, 252 just short of the inscribed / lethal values 253-254, which are obstacles here).
+     * Read from a map_server map in `scale` mode or `raw` mode (see loadRosMap()); empty for
+     * every other map. Planners use it only when asked (`cost_layer_weight`).
+     */
+    bool hasCosts() const { return !costs_.empty(); }
+    /// The cost of a cell (0 without a cost layer or off the map).
+    std::uint8_t cost(int col, int row) const { return costs_.empty() || !inBounds(col, row) ? 0 : costs_[index(col, row)]; }
+    /// Sets a cell's cost (0..252), creating the layer (all 0) at the first call.
+    void setCost(int col, int row, std::uint8_t c);
+    const std::vector<std::uint8_t> &costs() const { return costs_; }
+
     /// A copy resampled to @p newResolution (metres/cell): a new cell is blocked if any source
     /// cell it overlaps is occupied, unknown if any is unknown and none occupied, else free
     /// (conservative for planning).
@@ -124,6 +137,7 @@ private:
     double originX_{0.0}, originY_{0.0}, originYaw_{0.0};
     bool unknownIsFree_{false};
     std::vector<CellState> cells_;
+    std::vector<std::uint8_t> costs_;  ///< empty: no cost layer
 };
 
 }  // namespace gridcar

@@ -102,6 +102,7 @@ struct CarExpander
             if (hn == kInf) continue;
             const std::uint32_t id = S.intern(ni, nj, nh);
             double step = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+            step += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
             const std::int8_t gear = prim.reverse ? -1 : 1;
             if (prim.reverse) step *= S.query_.reversePenalty;
             if (S.gear_[s] != 0 && S.gear_[s] != gear) step += S.query_.cuspPenalty;  // a gear change

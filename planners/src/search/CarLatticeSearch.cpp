@@ -186,6 +186,25 @@ void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
     nj_ = int(std::ceil(hi[1] / c)) + 2 - j0_;
 }
 
+namespace
+{
+/// With a cost layer the analytic expansion ends the search at once, so it must not cross
+/// ground costlier than the query's start or goal: the search then goes round a costly band,
+/// not through it (measured from the query's start, not the shot's, or a node just inside
+/// the band would shoot through the rest). True when @p poses' mean cost exceeds that + 8.
+bool crossesCostlierGround(const CarLatticeQuery &q, const std::vector<Pose2> &poses)
+{
+    if (!q.layer || !(q.layerWeight > 0) || poses.empty()) return false;
+    const auto costAt = [&q](const Pose2 &p) {
+        const Cell c = q.layer->worldToCell(p.x, p.y);
+        return double(q.layer->cost(c.col, c.row));
+    };
+    double mean = 0;
+    for (const Pose2 &p : poses) mean += costAt(p);
+    return mean / double(poses.size()) > std::max(costAt(q.start), costAt(q.goal)) + 8.0;
+}
+}  // namespace
+
 bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)
 {
     const auto k = unpack(states_.key(s));
@@ -291,10 +310,12 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         poses.reserve(std::size_t(n));
         for (int i = 1; i <= n; ++i) poses.push_back(poseAt(i));
         poses.back() = {g.x, g.y, y};
+        if (crossesCostlierGround(query_, poses)) continue;
         shot_ = std::move(poses);
         shotFrom_ = s;
         shotCost_ = cost.stepCost(from, shot_, forward + query_.reversePenalty * backward, turn) +
-                    gearChanges * query_.cuspPenalty;
+                    gearChanges * query_.cuspPenalty +
+                    query_.layerCost(shot_, forward + backward) * cost.costPerMetreOfPenalty();
         return true;
     }
     return false;

@@ -28,6 +28,8 @@ struct CarSearchOptions
     /// that curvature changes no faster than this (1/m^2; 0: the path as searched)
     double curvatureRate{0.0};
     double maxCurvature{0.0};    ///< K_max (1/m) the replacements keep
+    const OccupancyGrid *layer{nullptr};  ///< the map's cost layer (CarLatticeQuery::layer)
+    double layerWeight{0.0};              ///< its weight (`cost_layer_weight`)
 };
 
 /**

@@ -44,6 +44,9 @@ struct GridPlannerParams
     /// quintics within `curvature_rate` (smoothCurvature())
     bool continuousCurvature{true};
     double curvatureRate{0.0};       ///< `curvature_rate` (car lattice), 1/m^2; 0 = the vehicle's
+    /// `cost_layer_weight` (car lattice): extra cost per metre = weight x the map's cost layer
+    /// value / 252 (map_server scale / raw maps, Nav2 costmap values); 0 = the layer is ignored
+    double costLayerWeight{0.0};
 };
 
 /**
@@ -170,6 +173,9 @@ public:
     /// The `curvature_rate` parameter as set (0: the vehicle's, curvatureRateLimit()).
     double curvatureRateParam() const { return params_.curvatureRate; }
     void setCurvatureRate(double rate);
+    double costLayerWeight() const { return params_.costLayerWeight; }
+    /// `cost_layer_weight` in [0, 1000]; std::invalid_argument otherwise.
+    void setCostLayerWeight(double w);
     /// The curvature rate the car lattice's paths keep (1/m^2; 0: not smoothed).
     double curvatureRate() const;
 
@@ -211,7 +217,7 @@ protected:
     virtual std::vector<std::string> carLatticeOnlyParams() const
     {
         return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "primitives", "curve_heuristic",
-                "continuous_curvature", "curvature_rate"};
+                "continuous_curvature", "curvature_rate", "cost_layer_weight"};
     }
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).

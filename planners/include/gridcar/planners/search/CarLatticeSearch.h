@@ -80,6 +80,23 @@ struct CarLatticeQuery
     /// Within this many metres of a goal whose heading must be matched, the heuristic also
     /// takes the Reeds-Shepp (reversing) or Dubins length to the goal pose (CurveBound); 0: not.
     double curveWithin{0.0};
+    /// The map's cost layer (OccupancyGrid::cost(), 0..252) and its weight: a motion costs
+    /// layerWeight x (mean cost of its poses / 252) x its length more, in metres converted by
+    /// the cost model (costPerMetreOfPenalty()). Null or 0: the layer is not used.
+    const OccupancyGrid *layer{nullptr};
+    double layerWeight{0.0};
+    /// The extra cost of a motion over @p poses of @p length metres (0 without a layer).
+    double layerCost(const std::vector<Pose2> &poses, double length) const
+    {
+        if (!layer || !(layerWeight > 0) || poses.empty()) return 0.0;
+        double sum = 0;
+        for (const Pose2 &p : poses)
+        {
+            const Cell c = layer->worldToCell(p.x, p.y);
+            sum += layer->cost(c.col, c.row);
+        }
+        return layerWeight * sum / (252.0 * double(poses.size())) * length;
+    }
 };
 
 /// What a search on the car lattice found.
