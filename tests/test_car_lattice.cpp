@@ -104,6 +104,55 @@ TEST(CarLattice, PrimitivesJoinNodesWithBoundedCurvatureAndDenseSamples)
             }
 }
 
+// Clothoid turns (CarLatticeConfig::curvatureRate): every primitive still joins nodes exactly
+// and stays within 1 / radius, starts and ends straight (curvature 0), and its curvature
+// changes no faster than the rate, so a path of primitives has continuous curvature.
+TEST(CarLattice, ClothoidTurnsJoinNodesWithContinuousCurvatureWithinTheRate)
+{
+    for (int headings : {8, 16})
+        for (double radius : {0.56, 3.9})
+            for (double sigma : {0.13, 2.0, 16.0})
+            {
+                CarLatticeConfig cfg{radius / 4, headings, radius, 0.02, 0.0};
+                cfg.curvatureRate = sigma;
+                const CarLattice L(cfg);
+                for (int h = 0; h < headings; ++h)
+                    for (std::size_t k = 0; k < L.primitives(h).size(); ++k)
+                    {
+                        const LatticePrimitive &p = L.primitives(h)[k];
+                        EXPECT_DOUBLE_EQ(p.samples.back().x, p.di * cfg.cell);
+                        EXPECT_DOUBLE_EQ(p.samples.back().y, p.dj * cfg.cell);
+                        EXPECT_NEAR(wrapAngle(p.samples.back().yaw - L.yaw(p.to)), 0.0, 1e-9);
+                        // curvature per interval, from the start pose (yaw of heading h)
+                        std::vector<double> kap, mid;
+                        Pose2 prev{0, 0, L.yaw(h)};
+                        double s = 0;
+                        for (const Pose2 &q : p.samples)
+                        {
+                            const double ds = std::hypot(q.x - prev.x, q.y - prev.y);
+                            if (ds > 1e-9)
+                            {
+                                kap.push_back(wrapAngle(q.yaw - prev.yaw) / ds);
+                                mid.push_back(s + ds / 2);
+                            }
+                            s += ds;
+                            prev = q;
+                        }
+                        ASSERT_GE(kap.size(), 2u);
+                        const double ds = mid[1] - mid[0];
+                        EXPECT_LE(std::abs(kap.front()), sigma * ds + 1e-6) << "starts straight";
+                        EXPECT_LE(std::abs(kap.back()), sigma * ds + 1e-6) << "ends straight";
+                        for (std::size_t i = 0; i < kap.size(); ++i)
+                        {
+                            EXPECT_LE(std::abs(kap[i]), 1.0 / radius * (1 + 1e-3));
+                            if (i > 0)
+                                EXPECT_LE(std::abs(kap[i] - kap[i - 1]) / (mid[i] - mid[i - 1]), sigma * 1.02 + 1e-6)
+                                    << "heading " << h << " primitive " << k << " at " << mid[i] << " m";
+                        }
+                    }
+            }
+}
+
 // The primitive set from its configuration: further radii add wider turns (where they land on
 // another node), reverse adds each forward primitive mirrored, the body turned round.
 TEST(CarLattice, FurtherRadiiAndReverseAreConfigurationOnly)
@@ -251,4 +300,20 @@ TEST(CarLattice, GrownFootprintAgreesOnTheNativeTsudanumaMap)
     }
     EXPECT_EQ(wrongFree, 0) << "of " << n << " poses";
     EXPECT_GT(hits, 500);
+}
+
+// The planners with clothoid turns (`turns=clothoid`): round the wall of wallMap(), paper I's
+// car, exact and drivable paths whose curvature changes within the vehicle's rate.
+TEST(CarLattice, ClothoidTurnsGivePathsWithinTheCurvatureRate)
+{
+    GridSetup setup = test::carSetup(SpaceKind::SE2);
+    const VehicleParams v = VehicleParams::preset("paper-i");
+    for (const std::string name : {"corner-astar", "improved-astar"})
+    {
+        const auto planner = configurePlanner(setup.ss->getSpaceInformation(), {name, {{"turns", "clothoid"}}, false, false});
+        const QueryResult q = runQuery(setup, planner, {5, 5, M_PI / 2}, {55, 5, -M_PI / 2}, 30.0, false);
+        ASSERT_EQ(q.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
+        EXPECT_TRUE(q.drivability.drivable) << name << ": " << q.drivability.reason;
+        EXPECT_LE(q.drivability.maxCurvatureRate, 1.02 * v.curvatureRateLimit()) << name;
+    }
 }

@@ -31,6 +31,14 @@ void GridPlanner::declareCarLatticeParams()
                          "0.:0.05:100.");
     declareParam<double>("cost_layer_weight", this, &GridPlanner::setCostLayerWeight, &GridPlanner::costLayerWeight,
                          "0.:0.5:100.");
+    declareParam<std::string>("turns", this, &GridPlanner::setTurns, &GridPlanner::turns, "arc,clothoid");
+}
+
+void GridPlanner::setTurns(const std::string &t)
+{
+    if (t != "arc" && t != "clothoid") throw std::invalid_argument(getName() + ": turns must be arc or clothoid, got '" + t + "'");
+    params_.turns = t;
+    parameterSet("turns");
 }
 
 void GridPlanner::setCostLayerWeight(double w)
@@ -210,6 +218,12 @@ CarLatticeConfig GridPlanner::carLatticeConfig(bool hybrid) const
     // arcs 1 % wider than R_min: sampled curves then stay within K_max by a clear margin
     cfg.turnRadius = rmin > 0 ? 1.01 * rmin : cfg.cell;
     cfg.reverse = reversing();
+    // clothoid turns a little inside the rate, so that sampled paths measure within it
+    if (params_.turns == "clothoid" && !hybrid)
+    {
+        const double sigma = params_.curvatureRate > 0 ? params_.curvatureRate : vehicle().curvatureRateLimit();
+        if (std::isfinite(sigma) && sigma > 0) cfg.curvatureRate = 0.95 * sigma;
+    }
     if (hybrid)
     {
         // 72 bins of 5 degrees; cells small enough that an arc of one bin at R_min leaves its

@@ -3,6 +3,7 @@
 #include "gridcar/core/Angles.h"
 #include "gridcar/curves/CarCurves.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -142,6 +143,54 @@ void CarLattice::addStraight(int h)
     prims_[h].push_back(std::move(p));
 }
 
+double CarLattice::turnLength(double delta, double R) const
+{
+    const double d = std::abs(delta), K = 1.0 / R, sigma = config_.curvatureRate;
+    if (!(sigma > 0)) return R * d;
+    if (d * sigma <= K * K) return 2.0 * std::sqrt(d / sigma);  // two clothoids, peak below 1 / R
+    return 2.0 * K / sigma + (d - K * K / sigma) / K;            // clothoid, arc at 1 / R, clothoid
+}
+
+Pose2 CarLattice::turnPose(double delta, double R, double s) const
+{
+    const double sg = delta >= 0 ? 1.0 : -1.0, d = std::abs(delta), sigma = config_.curvatureRate;
+    if (!(sigma > 0))
+    {
+        const double phi = sg * s / R;
+        return {R * std::sin(std::abs(phi)), sg * R * (1.0 - std::cos(phi)), phi};
+    }
+    // curvature profile: up at sigma to the peak, the peak held (arc), down at sigma to 0
+    const double K = 1.0 / R, L = turnLength(delta, R);
+    const double peak = d * sigma <= K * K ? std::sqrt(d * sigma) : K, rise = peak / sigma, hold = L - 2.0 * rise;
+    const auto kappa = [&](double u) {
+        if (u <= rise) return sigma * u;
+        if (u <= rise + hold) return peak;
+        return std::max(0.0, peak - sigma * (u - rise - hold));
+    };
+    const auto theta = [&](double u) {
+        if (u <= rise) return 0.5 * sigma * u * u;
+        const double t1 = 0.5 * sigma * rise * rise;
+        if (u <= rise + hold) return t1 + peak * (u - rise);
+        const double v = u - rise - hold;
+        return t1 + peak * hold + peak * v - 0.5 * sigma * v * v;
+    };
+    (void)kappa;
+    // position by Simpson's rule on cos / sin of the heading (fine steps: error below 1e-9 m)
+    s = std::clamp(s, 0.0, L);
+    const int n = std::max(2, 2 * int(std::ceil(s / 0.01)));
+    const double hstep = s / n;
+    double x = 0, y = 0;
+    for (int i = 0; i <= n; ++i)
+    {
+        const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0), th = theta(i * hstep);
+        x += w * std::cos(th);
+        y += w * std::sin(th);
+    }
+    x *= hstep / 3.0;
+    y *= hstep / 3.0;
+    return {x, sg * y, sg * theta(s)};
+}
+
 bool CarLattice::addTurn(int h, int dir, double R)
 {
     const int n = headings();
@@ -149,11 +198,14 @@ bool CarLattice::addTurn(int h, int dir, double R)
     const double t1 = yaw_[h], t2 = yaw_[to];
     const double delta = wrapAngle(t2 - t1);  // signed, |delta| < 90 degrees
     const double c = config_.cell, sg = delta > 0 ? 1.0 : -1.0;
-    // displacement of the arc alone (curvature sg / R from yaw t1 to t2)
-    const double ax = sg * R * (std::sin(t2) - std::sin(t1)), ay = sg * R * (std::cos(t1) - std::cos(t2));
+    // displacement of the curved part alone (an arc of curvature sg / R, or a clothoid turn,
+    // from yaw t1 to t2)
+    (void)sg;
+    const Pose2 local = turnPose(delta, R, turnLength(delta, R));
+    const double ax = std::cos(t1) * local.x - std::sin(t1) * local.y, ay = std::sin(t1) * local.x + std::cos(t1) * local.y;
     const double u1x = std::cos(t1), u1y = std::sin(t1), u2x = std::cos(t2), u2y = std::sin(t2);
     const double det = u1x * u2y - u1y * u2x;
-    const int W = int(std::ceil((2 * R + 3 * c) / c)) + 2;
+    const int W = int(std::ceil((2 * R + turnLength(delta, R) + 3 * c) / c)) + 2;
     LatticePrimitive best;
     double bestLen = std::numeric_limits<double>::infinity(), bestS1 = 0;
     for (int i = -W; i <= W; ++i)
@@ -162,7 +214,7 @@ bool CarLattice::addTurn(int h, int dir, double R)
             const double rx = i * c - ax, ry = j * c - ay;
             const double s1 = (rx * u2y - ry * u2x) / det, s2 = (u1x * ry - u1y * rx) / det;
             if (s1 < -1e-9 || s2 < -1e-9) continue;
-            const double len = std::max(s1, 0.0) + std::max(s2, 0.0) + R * std::abs(delta);
+            const double len = std::max(s1, 0.0) + std::max(s2, 0.0) + turnLength(delta, R);
             if (len < bestLen - 1e-9)
             {
                 bestLen = len;
@@ -187,13 +239,13 @@ bool CarLattice::addTurn(int h, int dir, double R)
 void CarLattice::sample(LatticePrimitive &p, double s1) const
 {
     const double t1 = yaw_[p.from], R = p.radius > 0 ? p.radius : config_.turnRadius;
-    const double arc = R * std::abs(p.turn), sg = p.turn > 0 ? 1.0 : -1.0;
+    const double arc = p.turn != 0 ? turnLength(p.turn, R) : 0.0;  // the curved part's length
     const double travel = arc > 0 ? p.length * (1.0 + config_.reach / R) : p.length;
     const int n = std::max(1, int(std::ceil(travel / config_.spacing - 1e-9)));
     const double u1x = std::cos(t1), u1y = std::sin(t1);
     const double t2 = t1 + p.turn;
-    const double ax = arc > 0 ? sg * R * (std::sin(t2) - std::sin(t1)) : 0.0;
-    const double ay = arc > 0 ? sg * R * (std::cos(t1) - std::cos(t2)) : 0.0;
+    const Pose2 endLocal = arc > 0 ? turnPose(p.turn, R, arc) : Pose2{};
+    const double ax = u1x * endLocal.x - u1y * endLocal.y, ay = u1y * endLocal.x + u1x * endLocal.y;
     // arc-length parameter at n points; the straight parts move points by ds, the arc by at most
     // ds (1 + reach / R): n was chosen from the larger so every step stays under the spacing
     p.samples.clear();
@@ -205,9 +257,8 @@ void CarLattice::sample(LatticePrimitive &p, double s1) const
             q = {s * u1x, s * u1y, t1};
         else if (s <= s1 + arc)
         {
-            const double phi = t1 + sg * (s - s1) / R;
-            q = {s1 * u1x + sg * R * (std::sin(phi) - std::sin(t1)), s1 * u1y + sg * R * (std::cos(t1) - std::cos(phi)),
-                 phi};
+            const Pose2 l = turnPose(p.turn, R, s - s1);
+            q = {s1 * u1x + u1x * l.x - u1y * l.y, s1 * u1y + u1y * l.x + u1x * l.y, t1 + l.yaw};
         }
         else
         {

@@ -47,6 +47,9 @@ struct GridPlannerParams
     /// `cost_layer_weight` (car lattice): extra cost per metre = weight x the map's cost layer
     /// value / 252 (map_server scale / raw maps, Nav2 costmap values); 0 = the layer is ignored
     double costLayerWeight{0.0};
+    /// `turns` (car lattice): arc (the lattice's turns are arcs at R_min) or clothoid (clothoid
+    /// turns within the curvature rate: the searched path's curvature is continuous)
+    std::string turns{"arc"};
 };
 
 /**
@@ -174,6 +177,9 @@ public:
     double curvatureRateParam() const { return params_.curvatureRate; }
     void setCurvatureRate(double rate);
     double costLayerWeight() const { return params_.costLayerWeight; }
+    std::string turns() const { return params_.turns; }
+    /// `turns`: arc or clothoid; std::invalid_argument otherwise.
+    void setTurns(const std::string &t);
     /// `cost_layer_weight` in [0, 1000]; std::invalid_argument otherwise.
     void setCostLayerWeight(double w);
     /// The curvature rate the car lattice's paths keep (1/m^2; 0: not smoothed).
@@ -217,7 +223,7 @@ protected:
     virtual std::vector<std::string> carLatticeOnlyParams() const
     {
         return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "primitives", "curve_heuristic",
-                "continuous_curvature", "curvature_rate", "cost_layer_weight"};
+                "continuous_curvature", "curvature_rate", "cost_layer_weight", "turns"};
     }
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).

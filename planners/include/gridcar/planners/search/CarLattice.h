@@ -32,10 +32,16 @@ struct CarLatticeConfig
     /// or a straight of one length, a whole number of bins of heading at R_min and at least 1.5
     /// cells, so that manoeuvres far finer than a lattice node's can be made in a tight spot.
     bool hybrid{false};
+    /// 1/m^2, > 0: the lattice's turns are clothoid turns instead of arcs (a clothoid from
+    /// curvature 0 up at this rate, an arc of the turning radius if the turn needs it, a
+    /// clothoid back to 0), so every primitive starts and ends straight and a path of them has
+    /// continuous curvature changing no faster than this; 0: arcs (curvature jumps at each end).
+    double curvatureRate{0.0};
     bool operator==(const CarLatticeConfig &o) const
     {
         return cell == o.cell && headings == o.headings && turnRadius == o.turnRadius && extraRadii == o.extraRadii &&
-               reverse == o.reverse && spacing == o.spacing && reach == o.reach && hybrid == o.hybrid;
+               reverse == o.reverse && spacing == o.spacing && reach == o.reach && hybrid == o.hybrid &&
+               curvatureRate == o.curvatureRate;
     }
     bool operator!=(const CarLatticeConfig &o) const { return !(*this == o); }
 };
@@ -109,6 +115,11 @@ private:
     void addReverse(int h);
     void addHybrid();
     void sample(LatticePrimitive &p, double s1) const;
+    /// The curved part of a turn of signed deflection @p delta at radius @p R from yaw 0 at the
+    /// origin: an arc, or with curvatureRate a clothoid turn; its pose at arc length @p s.
+    Pose2 turnPose(double delta, double R, double s) const;
+    /// Its length.
+    double turnLength(double delta, double R) const;
 
     CarLatticeConfig config_;
     std::vector<std::array<int, 2>> vec_;
