@@ -122,8 +122,8 @@ def main():
     handles.append(Line2D([], [], color="m", marker="*", ms=11, linestyle="none",
                           label="goal" + ("" if gyaw is not None else " (any heading)")))
     if veh:
-        handles.append(Line2D([], [], color="grey", lw=0.8, label="vehicle outline ({:g} m x {:g} m)".format(
-            veh["length"], veh["width"])))
+        handles.append(Line2D([], [], color="grey", lw=0.8, label="vehicle {} ({:g} m x {:g} m)".format(
+            "footprint" if veh.get("footprint") else "outline", veh["length"], veh["width"])))
     if spec.get("tint"):
         handles.append(mpatches.Patch(color=spec["tint"]["colour"], label=spec["tint"]["label"]))
     handles.append(mpatches.Patch(facecolor="black", label="occupied"))
