@@ -14,7 +14,7 @@ shift || true
 TARGETS=("$@")
 if [ ${#TARGETS[@]} -eq 0 ]; then
   TARGETS=(fuzz_ros_map fuzz_image fuzz_movingai_map fuzz_movingai_scen fuzz_vehicle_yaml fuzz_problem_yaml
-           fuzz_scenario_yaml fuzz_cli_args)
+           fuzz_scenario_yaml fuzz_cli_args fuzz_path_file)
 fi
 if [ ! -f build-fuzz/CMakeCache.txt ]; then
   CXX=clang++ CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIDCAR_FUZZ=ON \

@@ -1,6 +1,8 @@
-// `gridcar bench` problem files (readProblem), and every query's poses read against a small map.
+// `gridcar bench` problem files (readProblem), and every query's poses read against a small map;
+// the same bytes as a `--params-file` (readParamsFile), applied to the problem when both read.
 #include "FuzzUtil.h"
 
+#include "gridcar/bench/ParamsFile.h"
 #include "gridcar/bench/Problem.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
@@ -19,6 +21,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             (void)bench::readPose(p, p.queries[i], "start", grid, yaw, i);
             (void)bench::readPose(p, p.queries[i], "goal", grid, yaw, i);
         }
+    });
+    fuzz::expectCleanly([&] {
+        const bench::ParamsFile pf = bench::readParamsFile(path);
+        bool skip = false;
+        std::string why;
+        bench::Problem p = bench::readProblem(path, fuzz::workDir() + "/shared", skip, why);
+        if (!skip) bench::applyParamsFile(p, pf);
     });
     return 0;
 }
