@@ -3,9 +3,12 @@
 
 #include <ompl/config.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace gridcar::bench
 {
@@ -23,11 +26,35 @@ void ArenaBenchmark::tidy(const ompl::geometric::SimpleSetup &ss)
     setup << "\nProperties of benchmarked planners:\n";
     for (const auto &pl : planners_) pl->printProperties(setup);
     exp_.setupInfo = setup.str();
+    // a progress property is kept only where some sample of some run has a finite value (an
+    // anytime planner's best cost stays infinite until its first solution), and a planner's
+    // progress only if something besides the time is left: no column, no plot, without data
+    const auto filled = [](const std::string &v) {
+        char *end = nullptr;
+        const double d = std::strtod(v.c_str(), &end);
+        return end != v.c_str() && std::isfinite(d);
+    };
     for (auto &pe : exp_.planners)
     {
+        std::vector<std::string> keep;
+        for (const std::string &name : pe.progressPropertyNames)
+        {
+            bool any = false;
+            for (const auto &run : pe.runsProgressData)
+                for (const auto &sample : run)
+                {
+                    const auto it = sample.find(name);
+                    any = any || (it != sample.end() && filled(it->second));
+                }
+            if (any || name == "time REAL") keep.push_back(name);
+            else
+                for (auto &run : pe.runsProgressData)
+                    for (auto &sample : run) sample.erase(name);
+        }
+        pe.progressPropertyNames = keep;
         bool sampled = false;
         for (const auto &r : pe.runsProgressData) sampled = sampled || !r.empty();
-        if (!sampled) pe.runsProgressData.clear();  // no progress table rows, no empty plot
+        if (!sampled || keep.size() <= 1) pe.runsProgressData.clear();  // no progress rows, no empty plot
     }
 }
 
