@@ -17,6 +17,9 @@ matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_figure  # noqa: E402
+
 METRICS = [  # (column, header, format)
     ("time", "time s", "{:.3f}"),
     ("time_to_first_solution", "first solution s", "{:.3f}"),
@@ -37,17 +40,9 @@ def query_of(ename):
     return m.group(1) if m else ename
 
 
-def outline(ax, x, y, yaw, veh, colour):
-    """The vehicle's outline at a pose (reference point: rear axle): its polygon footprint, or
-    the rectangle."""
-    if veh.get("footprint"):
-        pts = [tuple(p) for p in veh["footprint"]] + [tuple(veh["footprint"][0])]
-    else:
-        length, width, rear = veh["length"], veh["width"], veh["rear_overhang"]
-        pts = [(-rear, -width / 2), (length - rear, -width / 2), (length - rear, width / 2), (-rear, width / 2),
-               (-rear, -width / 2)]
-    c, s = math.cos(yaw), math.sin(yaw)
-    ax.plot([x + c * u - s * v for u, v in pts], [y + s * u + c * v for u, v in pts], color=colour, lw=0.6, alpha=0.85)
+def outline(ax, x, y, yaw, veh, color):
+    """The vehicle's outline at a pose: plot_figure.py's drawing (installed beside this script)."""
+    plot_figure.outline(ax, x, y, yaw, veh, color, lw=0.6)
 
 
 def summary(cur, exps, cols):

@@ -162,11 +162,6 @@ Pose2 CarLattice::turnPose(double delta, double R, double s) const
     // curvature profile: up at sigma to the peak, the peak held (arc), down at sigma to 0
     const double K = 1.0 / R, L = turnLength(delta, R);
     const double peak = d * sigma <= K * K ? std::sqrt(d * sigma) : K, rise = peak / sigma, hold = L - 2.0 * rise;
-    const auto kappa = [&](double u) {
-        if (u <= rise) return sigma * u;
-        if (u <= rise + hold) return peak;
-        return std::max(0.0, peak - sigma * (u - rise - hold));
-    };
     const auto theta = [&](double u) {
         if (u <= rise) return 0.5 * sigma * u * u;
         const double t1 = 0.5 * sigma * rise * rise;
@@ -174,7 +169,6 @@ Pose2 CarLattice::turnPose(double delta, double R, double s) const
         const double v = u - rise - hold;
         return t1 + peak * hold + peak * v - 0.5 * sigma * v * v;
     };
-    (void)kappa;
     // position by Simpson's rule on cos / sin of the heading (fine steps: error below 1e-9 m)
     s = std::clamp(s, 0.0, L);
     const int n = std::max(2, 2 * int(std::ceil(s / 0.01)));
