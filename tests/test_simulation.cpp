@@ -167,3 +167,33 @@ TEST(Simulation, ScenarioFilesAreReadAndBadOnesNamed)
         EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
     }
 }
+
+// A path whose curvature jumps from straight to full lock (a lattice path's arc) is driven by
+// stopping at the jump and turning the wheels at a standstill, as a driver does in a tight
+// manoeuvre: the car then stays on the arc (driven through, the wheels turning at the steering
+// rate leave the heading lagging by a tenth of a radian, paper C's car at full lock).
+TEST(Simulation, TheWheelsTurnAtAStandstillWhereTheCurvatureJumps)
+{
+    auto g = std::make_shared<OccupancyGrid>(600, 400, 0.1);
+    GridSetup s = makeGridSetup(g, VehicleParams::preset("paper-c-car"));
+    const VehicleParams &v = s.checker->vehicle();
+    const double R = 1.01 * v.minTurningRadius();
+    std::vector<Pose2> path;
+    for (double x = 10.0; x < 20.0 - 1e-9; x += 0.05) path.push_back({x, 10.0, 0.0});
+    for (double a = 0.0; a < M_PI / 2 - 1e-9; a += 0.05 / R)
+        path.push_back({20.0 + R * std::sin(a), 10.0 + R * (1.0 - std::cos(a)), a});
+    for (double y = 10.0 + R; y <= 20.0 + R + 1e-9; y += 0.05) path.push_back({20.0 + R, y, M_PI / 2});
+    const DriveResult d = drivePath(path, *s.checker, Scenario());
+    ASSERT_EQ(d.outcome, DriveResult::Outcome::Reached) << d.reason;
+    // a standstill on the way (not at the start, not at the goal) with the wheels turning
+    double turnedStanding = 0.0;
+    for (std::size_t i = 1; i < d.trajectory.size(); ++i)
+    {
+        const TrajectorySample &a = d.trajectory[i - 1], &b = d.trajectory[i];
+        const bool onTheWay = std::hypot(b.x - path.front().x, b.y - path.front().y) > 1.0 &&
+                              std::hypot(b.x - path.back().x, b.y - path.back().y) > 1.0;
+        if (onTheWay && std::abs(a.v) < 1e-9 && std::abs(b.v) < 1e-9) turnedStanding += std::abs(b.steer - a.steer);
+    }
+    EXPECT_GT(turnedStanding, 0.8 * std::atan(v.wheelbase / R)) << "the wheels were not turned at a standstill";
+    EXPECT_LT(d.crossTrackMax, 0.1);
+}

@@ -86,6 +86,27 @@ public:
     /// The time the follower starts (a later piece of a path with cusps): progress is judged
     /// from then on.
     void startAt(double t) { markTime_ = t; }
+    /// Takes the progress back to @p s at time @p t (the car backed up along the path to
+    /// approach again), with the speed capped at @p vCap until @p capUntil along the path.
+    void rewind(double s, double t, double capUntil, double vCap)
+    {
+        sProj_ = progressMark_ = std::clamp(s, 0.0, path_.total);
+        seg_ = path_.segmentAt(sProj_);
+        markTime_ = t;
+        viaBoost_ = 0.0;
+        capS_ = capUntil;
+        capV_ = vCap;
+    }
+    /// Caps every speed command of this piece (a back-up manoeuvre is driven at a crawl).
+    void capSpeed(double v)
+    {
+        capS_ = kInf;
+        capV_ = v;
+    }
+    /// The crawl: the speed floor away from the end of the path, and the speed of manoeuvres.
+    double crawl() const { return creep_; }
+    /// The safety rollout found no command that keeps the body free (the last safeCommand()).
+    bool blocked() const { return blocked_; }
 
     /// Progress bookkeeping and recovery: when progress along the path stalls for stuckWindow
     /// seconds, a virtual obstacle where the vehicle is and a via-point further on; false (and
@@ -241,6 +262,7 @@ public:
         }
         else
             limit_.clear();
+        if (sProj_ < capS_) vCmd = std::min(vCmd, capV_);
         return std::min({vCmd, vStatic, vMoving});
     }
 
@@ -252,81 +274,11 @@ public:
     /// itself: where the path passes an obstacle closely, softening a command the field has bent
     /// does not bring the body back to the path the planner checked.
     void safeCommand(const VehicleState &st, double t, double steerCmd, double vCmd, double &steerUse, double &vUse,
-                     double steerTrack) const
-    {
-        steerUse = steerCmd, vUse = 0.0;
-        // {steering factor, speed factor, follow the path alone}
-        const double candidates[][3] = {{1.0, 1.0, 0}, {1.0, 1.0, 1}, {1.0, 0.5, 1}, {0.5, 1.0, 0}, {0.0, 1.0, 0},
-                                        {1.0, 0.5, 0}, {0.5, 0.5, 0}, {0.0, 0.5, 0}, {-0.5, 0.5, 0}};
-        const int horizon = std::max(2, int(std::ceil(0.6 / prm_.dt)));
-        for (const auto &cand : candidates)
-        {
-            const double steer = cand[0] * (cand[2] > 0 ? steerTrack : steerCmd);
-            VehicleState r = st;
-            bool ok = true;
-            for (int k = 1; k <= horizon && ok; ++k)
-            {
-                r = stepBicycle(r, veh_, steer, cand[1] * vCmd, prm_.dt);
-                // every step: the body can swing into a corner between two checks further apart
-                ok = checker_.isValid(r.x, r.y, r.yaw);
-                for (const MovingObstacle &m : scenario_.obstacles)
-                {
-                    if (!ok) break;
-                    double mx, my;
-                    m.positionAt(t + k * prm_.dt, mx, my);
-                    ok = m.distanceFrom(r.x + veh_.centreOffset() * std::cos(r.yaw), r.y + veh_.centreOffset() * std::sin(r.yaw),
-                                        t + k * prm_.dt) > veh_.circumscribedRadius();
-                }
-            }
-            if (ok)
-            {
-                steerUse = steer;
-                vUse = cand[1] * vCmd;
-                return;
-            }
-        }
-        if (vCmd > 0)
-        {
-            char buf[200];
-            std::snprintf(buf, sizeof buf,
-                          "the safety rollout: no softened command keeps the body free for 0.6 s (steering %.2f rad asked, "
-                          "body clearance %.2f m)",
-                          steerCmd, checker_.clearance(st.x, st.y, st.yaw));
-            limit_ = buf;
-        }
-    }
+                     double steerTrack) const;
 
     /// Collision of the body with the map (FCL footprint checker) or a moving obstacle (FCL):
     /// false with the reason in @p res; else @p clearance is the body's clearance.
-    bool bodyFree(const VehicleState &st, double t, DriveResult &res, double &clearance) const
-    {
-        if (!checker_.isValid(st.x, st.y, st.yaw))
-        {
-            res.outcome = DriveResult::Outcome::Collided;
-            res.reason = "hit the map at " + where(st);
-            return false;
-        }
-        clearance = checker_.clearance(st.x, st.y, st.yaw);
-        if (scenario_.obstacles.empty()) return true;
-        auto body = vehicleBox(veh_, st.x, st.y, st.yaw);
-        for (const MovingObstacle &m : scenario_.obstacles)
-        {
-            auto obj = fclObject(m, t);
-            fcl::CollisionRequestd creq;
-            fcl::CollisionResultd cres;
-            if (fcl::collide(body.get(), obj.get(), creq, cres) > 0)
-            {
-                res.outcome = DriveResult::Outcome::Collided;
-                res.reason = "hit moving obstacle '" + m.name + "' at t = " + std::to_string(t) + " s, at " + where(st);
-                return false;
-            }
-            fcl::DistanceRequestd dreq;
-            fcl::DistanceResultd dres;
-            fcl::distance(body.get(), obj.get(), dreq, dres);
-            clearance = std::min(clearance, dres.min_distance);
-        }
-        return true;
-    }
+    bool bodyFree(const VehicleState &st, double t, DriveResult &res, double &clearance) const;
 
 private:
     /// Free distance ahead of the front bumper in a lane of the body's width: of the map and
@@ -374,6 +326,8 @@ private:
     const FollowerParams &prm_;
     double halfWidth_, aLat_, creep_, frontOffset_, brakeRange_;
     double sProj_{0.0}, progressMark_{0.0}, markTime_{0.0}, viaBoost_{0.0}, lateral_{0.0};
+    double capS_{-1.0}, capV_{kInf};  ///< speed cap up to this arc length (rewind(), capSpeed())
+    mutable bool blocked_{false};
     std::size_t seg_{0};
     std::vector<std::pair<double, double>> virtualObstacles_;
     /// The rule that last held the vehicle back (empty: none), for the stop message.

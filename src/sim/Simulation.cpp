@@ -57,6 +57,12 @@ VehicleParams mirrored(const VehicleParams &v)
     m.cornerSpeed90 = std::min(m.cornerSpeed90, m.maxSpeed);
     m.cornerSpeed135 = std::min(m.cornerSpeed135, m.maxSpeed);
     m.name = v.name + " (reversing)";
+    if (v.hasPolygon())  // the polygon turned round with the heading
+    {
+        std::vector<std::array<double, 2>> turned = v.footprint;
+        for (auto &q : turned) q = {-q[0], -q[1]};
+        m.setFootprint(std::move(turned));
+    }
     return m;
 }
 
@@ -68,6 +74,65 @@ VehicleState turnedRound(VehicleState s)
     return s;
 }
 
+/// How far beside a cusp (m) a car stopped at the end of its piece may change gear and go on.
+constexpr double kCuspReach = 1.0;
+
+/// Where a piece's curvature jumps faster than the wheels can follow at a crawl (a lattice
+/// path's arcs at full lock against straights or the opposite lock), the piece is cut: the car
+/// stops there and turns its wheels at a standstill before it goes on, as a driver does in a
+/// tight manoeuvre. Driven through, such a jump leaves the heading lagging by about half the
+/// jump times the distance the wheels take to turn (0.1 rad for paper C's car reversing into a
+/// parallel slot), which a body a few centimetres from a parked car has no room for. A jump is
+/// a change of the wheel angle, atan(wheelbase x curvature), between two neighbouring vertices
+/// of more than the steering rate turns while the car crawls (min(0.1 v_max, 0.5 m/s)) over
+/// the step between them; cuts closer than 0.3 m to the last one, or to either end, are merged
+/// away. A path that is not followable (a grid path's kinks, beyond K_max) is not cut.
+std::vector<std::vector<Pose2>> cutAtSteeringJumps(const std::vector<Pose2> &poses, const VehicleParams &veh)
+{
+    std::vector<Pose2> pts;
+    for (const Pose2 &p : poses)
+        if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+    if (pts.size() < 4) return {poses};
+    std::vector<double> cum{0.0}, heading;
+    for (std::size_t i = 1; i < pts.size(); ++i)
+    {
+        cum.push_back(cum.back() + std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y));
+        heading.push_back(std::atan2(pts[i].y - pts[i - 1].y, pts[i].x - pts[i - 1].x));
+    }
+    // wheel angle at each inner vertex (turning-angle curvature, as the drivable check measures)
+    std::vector<double> wheel(pts.size(), 0.0);
+    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
+    {
+        const double ds = 0.5 * (cum[i + 1] - cum[i - 1]);
+        const double k = wrapAngle(heading[i] - heading[i - 1]) / ds;
+        if (std::abs(k) > 1.05 * veh.maxCurvature()) return {poses};  // not followable: paper C's rule alone
+        wheel[i] = std::atan(veh.wheelbase * k);
+    }
+    wheel.front() = wheel[1];
+    wheel.back() = wheel[pts.size() - 2];
+    const double rate = veh.maxSteerRateDeg * M_PI / 180.0, crawl = std::min(0.1 * veh.maxSpeed, 0.5);
+    std::vector<std::size_t> cuts;
+    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
+    {
+        const double ds = cum[i + 1] - cum[i];
+        if (std::abs(wheel[i + 1] - wheel[i]) <= rate * ds / crawl + 1e-9) continue;
+        // the jump is spread over the two vertices round a primitive's joint: cut at the first
+        if (cum[i] < 0.3 || cum.back() - cum[i] < 0.3) continue;
+        if (!cuts.empty() && cum[i] - cum[cuts.back()] < 0.3) continue;
+        cuts.push_back(i);
+    }
+    if (cuts.empty()) return {poses};
+    std::vector<std::vector<Pose2>> out;
+    std::size_t from = 0;
+    for (std::size_t c : cuts)
+    {
+        out.emplace_back(pts.begin() + std::ptrdiff_t(from), pts.begin() + std::ptrdiff_t(c) + 1);
+        from = c;
+    }
+    out.emplace_back(pts.begin() + std::ptrdiff_t(from), pts.end());
+    return out;
+}
+
 /// What the loop over a path's pieces shares.
 struct DriveRun
 {
@@ -77,6 +142,17 @@ struct DriveRun
     DriveResult &res;
     double t{0.0}, ctSum{0.0};
     std::size_t steps{0};
+    const FootprintChecker *car{nullptr};              ///< the vehicle driving forwards
+    std::unique_ptr<FootprintChecker> *mirror{nullptr};  ///< the vehicle reversing (made on first use)
+    bool manoeuvring{false};                            ///< inside a back-up manoeuvre
+
+    /// The checker of the vehicle in the gear @p backward.
+    const FootprintChecker &checkerFor(bool backward)
+    {
+        if (!backward) return *car;
+        if (!*mirror) *mirror = std::make_unique<FootprintChecker>(car->gridPtr(), car->fieldPtr(), mirrored(car->vehicle()));
+        return **mirror;
+    }
 
     void record(const VehicleState &st, bool backward)
     {
@@ -92,6 +168,9 @@ struct DriveRun
     {
         const VehicleParams &veh = fc.vehicle();
         detail::Follower follower(path, fc, scenario, prm);
+        if (manoeuvring) follower.capSpeed(follower.crawl());
+        double blockedSince = -1.0;
+        int backUps = 0;
         // a piece ending at a cusp ends where the next one starts: much closer than the goal
         // tolerance, or the next piece starts off its path with no steering reserve
         const double tolHere = last ? tol : std::min(tol, 0.1);
@@ -113,9 +192,12 @@ struct DriveRun
             ++steps;
             const Pose2 &end = path.pts.back();
             const double toEnd = std::hypot(st.x - end.x, st.y - end.y);
-            // a cusp: within 0.1 m, or within the goal tolerance once stopped at the end
+            // a cusp: within 0.1 m, or once stopped at the end beside it (the speed command stops
+            // a step's minimum advance, 1 mm, short of the end). Beside a cusp the car cannot get
+            // closer along this piece: the next piece, in the other gear, steers the offset back
+            // (short pieces of a path that saws back and forth add up their offsets otherwise)
             if ((toEnd <= tolHere && (follower.progress() >= path.total - 1e-3 || st.v <= 1e-3)) ||
-                (toEnd <= tol && follower.progress() >= path.total - 1e-3 && st.v <= 1e-3))
+                (toEnd <= (last ? tol : kCuspReach) && follower.progress() >= path.total - 0.01 && st.v <= 1e-3))
             {
                 if (last) return true;
                 // a cusp: stand still before the gear changes
@@ -159,8 +241,61 @@ struct DriveRun
             double steerUse, vUse;
             follower.safeCommand(st, t, steerCmd, vCmd, steerUse, vUse,
                                  path.followable ? feedForward + headingTerm + crossTerm : steerCmd);
+            // standing still with every command refused by the safety rollout (the body off the
+            // path beside an obstacle, its heading lagging at a corner): back up along the path
+            // and approach again at a crawl, as a driver would, before the stuck rules apply
+            if (follower.blocked() && std::abs(st.v) <= 1e-3)
+            {
+                if (blockedSince < 0) blockedSince = t;
+                if (t - blockedSince >= 1.0 && !manoeuvring && backUps < prm.maxRecoveries)
+                {
+                    ++backUps;
+                    blockedSince = -1.0;
+                    if (!backUp(path, follower, st, backward)) return false;
+                    continue;
+                }
+            }
+            else
+                blockedSince = -1.0;
             if (!step(follower, veh, st, steerUse, vUse, backward)) return false;
         }
+    }
+
+    /// Backs the car up along the part of @p path it has driven (in the other gear, at a crawl)
+    /// by max(1 m, half its length), then takes @p follower's progress back to where it stands
+    /// and caps the speed up to a metre past the point where it stood blocked. False only when
+    /// the run ended (a collision or the time limit: res says why); a back-up that does not get
+    /// far leaves the car where it stopped and the follower's recoveries go on.
+    bool backUp(const detail::TrackedPath &path, detail::Follower &follower, VehicleState &st, bool backward)
+    {
+        const double s0 = follower.progress();
+        const double back = std::min(s0, std::max(1.0, 0.5 * car->vehicle().length));
+        if (back < 0.2) return true;
+        std::vector<Pose2> rev;
+        double x, y;
+        path.pointAt(s0, x, y);
+        const double turn = M_PI;
+        rev.push_back({x, y, wrapAngle(path.heading[path.segmentAt(s0)] + turn)});
+        for (std::size_t i = path.pts.size(); i-- > 0;)
+            if (path.cum[i] < s0 - 1e-6 && path.cum[i] > s0 - back + 1e-6)
+                rev.push_back({path.pts[i].x, path.pts[i].y, wrapAngle(path.heading[i] + turn)});
+        path.pointAt(s0 - back, x, y);
+        rev.push_back({x, y, wrapAngle(path.heading[path.segmentAt(s0 - back)] + turn)});
+        const FootprintChecker &other = checkerFor(!backward);
+        const detail::TrackedPath backPath(rev, other);
+        if (backPath.pts.size() < 2) return true;
+        VehicleState b = turnedRound(st);
+        const DriveResult::Outcome outcome = res.outcome;
+        const std::string reason = res.reason;
+        const int recoveries = res.recoveries;
+        manoeuvring = true;
+        const bool ok = piece(backPath, other, b, !backward, false);
+        manoeuvring = false;
+        if (!ok && res.outcome != DriveResult::Outcome::Stuck) return false;
+        res.outcome = outcome, res.reason = reason, res.recoveries = recoveries;
+        st = turnedRound(b);
+        follower.rewind(std::max(0.0, s0 - back - 0.5), t, s0 + 1.0, follower.crawl());
+        return true;
     }
 
     /// One simulated step with these commands, recorded and checked: false when the body hit
@@ -188,14 +323,16 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
     const VehicleParams &veh = checker.vehicle();
     if (!(prm.dt > 0) || !(veh.maxSpeed > 0) || !(veh.acceleration > 0) || !(veh.deceleration > 0))
         throw std::invalid_argument("drivePath needs dt > 0 and a vehicle with max_speed, acceleration, deceleration > 0");
-    // the pieces between cusps, each in its gear (a forward-only path is one piece)
+    // the pieces between cusps, each in its gear (a forward-only path is one piece), each cut
+    // again where the car steers at a standstill (cutAtSteeringJumps)
     std::vector<PathPiece> pieces;
     for (PathPiece &p : splitAtCusps(pathIn))
     {
         double len = 0;
         for (std::size_t i = 1; i < p.poses.size(); ++i)
             len += std::hypot(p.poses[i].x - p.poses[i - 1].x, p.poses[i].y - p.poses[i - 1].y);
-        if (len > 1e-9) pieces.push_back(std::move(p));
+        if (len <= 1e-9) continue;
+        for (std::vector<Pose2> &cut : cutAtSteeringJumps(p.poses, veh)) pieces.push_back({std::move(cut), p.backward});
     }
     if (pieces.empty())
     {
@@ -203,7 +340,7 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         res.reason = "the path has no length";
         return res;
     }
-    std::unique_ptr<FootprintChecker> reverseChecker;  // the mirrored vehicle, when a piece reverses
+    std::unique_ptr<FootprintChecker> reverseChecker;  // the mirrored vehicle, when a piece reverses or backs up
     std::vector<std::unique_ptr<detail::TrackedPath>> tracked;
     double budget = 0.0;
     for (PathPiece &p : pieces)
@@ -221,6 +358,8 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
     }
     const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, checker.field().resolution());
     DriveRun run{scenario, prm, tol, prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget, res};
+    run.car = &checker;
+    run.mirror = &reverseChecker;
     res.minClearance = detail::kInf;
     VehicleState st;
     st.x = pieces.front().poses.front().x;
