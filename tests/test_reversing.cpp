@@ -156,10 +156,11 @@ GridSetup parkingSetup(const std::string &vehicle, const std::string &scene, Par
 }
 }  // namespace
 
-// Out of a parallel slot the lattice's nodes cannot manoeuvre (every primitive longer than the
-// gap allows): primitives=lattice ends approximate; the default (auto) falls back to the hybrid
-// primitive set and leaves exactly at the goal pose, drivable, in a few manoeuvres.
-TEST(Reversing, TheHybridFallbackLeavesAParallelSlot)
+// Out of a parallel slot the lattice's nodes cannot manoeuvre from the start (every primitive
+// longer than the gap allows), but the same search from the goal back into the slot finds the
+// way (CarLatticeQuery::timeReversed): primitives=lattice leaves exactly at the goal pose now,
+// and so does the default (auto, with the hybrid fallback), drivable, with a cusp.
+TEST(Reversing, ASearchFromTheGoalLeavesAParallelSlot)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     ParkingQuery q;
@@ -171,17 +172,40 @@ TEST(Reversing, TheHybridFallbackLeavesAParallelSlot)
         p->params().setParam("reverse", "on");
         p->params().setParam("primitives", prims);
         const QueryResult r = runQuery(s, p, q.start, q.goal, 5.0);
-        if (std::string(prims) == "lattice")
-        {
-            EXPECT_NE(r.status, ob::PlannerStatus::EXACT_SOLUTION);
-            continue;
-        }
         ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
         EXPECT_TRUE(r.drivability.drivable) << r.drivability.reason;
         EXPECT_GE(r.metrics.cusps, 1);
+        EXPECT_NEAR(r.path.front().x, q.start.x, 1e-6);
+        EXPECT_NEAR(r.path.front().y, q.start.y, 1e-6);
+        EXPECT_NEAR(wrapAngle(r.path.front().yaw - q.start.yaw), 0.0, 1e-6);
         EXPECT_NEAR(r.path.back().x, q.goal.x, 1e-6);
         EXPECT_NEAR(r.path.back().y, q.goal.y, 1e-6);
         EXPECT_NEAR(wrapAngle(r.path.back().yaw - q.goal.yaw), 0.0, 1e-6);
+    }
+}
+
+// Paper I's 5.55 m car (2 m of rear overhang swinging out) into and out of a gap of 1.5 car
+// lengths: the lattice from the start and from the goal and the hybrid set from the start all
+// run out; the hybrid set searched from the goal, or at half its cell, finds both, exact at the
+// goal pose, drivable, and the simulation drives them to the goal (before: neither found in 5 s).
+TEST(Reversing, PaperIsCarParksInAndLeavesAParallelGap)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    for (const char *name : {"parallel/park", "parallel/leave"})
+    {
+        SCOPED_TRACE(name);
+        ParkingQuery q;
+        GridSetup s = parkingSetup("paper-i", "parallel", q, name);
+        auto p = makePlanner(s.ss->getSpaceInformation(), "corner-astar");
+        p->params().setParam("reverse", "on");
+        const QueryResult r = runQuery(s, p, q.start, q.goal, 10.0);
+        ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
+        EXPECT_TRUE(r.drivability.drivable) << r.drivability.reason;
+        EXPECT_NEAR(r.path.back().x, q.goal.x, 1e-6);
+        EXPECT_NEAR(r.path.back().y, q.goal.y, 1e-6);
+        EXPECT_NEAR(wrapAngle(r.path.back().yaw - q.goal.yaw), 0.0, 1e-6);
+        const DriveResult d = drivePath(r.path, *s.checker, Scenario());
+        EXPECT_EQ(d.outcome, DriveResult::Outcome::Reached) << d.reason;
     }
 }
 

@@ -6,7 +6,11 @@
 
 #include <ompl/geometric/PathGeometric.h>
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
+#include <vector>
+#include <utility>
 
 namespace gridcar
 {
@@ -19,7 +23,14 @@ void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision>
     collision_ = std::move(collision);
     if (!same) search_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(cfg));
     fallback_.reset();
-    if (fallback) fallback_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(*fallback));
+    fine_.reset();
+    if (!fallback) return;
+    fallback_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(*fallback));
+    // the hybrid nodes halved (a gap the fallback's cells are too coarse for), down to 2.5 cm
+    CarLatticeConfig fine = *fallback;
+    fine.cell = fallback->cell / 2;
+    fine.spacing = std::min(fine.spacing, fine.cell / 2);
+    if (fine.cell >= 0.025) fine_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(fine));
 }
 
 FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
@@ -60,19 +71,67 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     const auto t0 = std::chrono::steady_clock::now();
     CarLatticeResult r = search_->run(q, cost, cancelled, progress);
     last_ = search_.get();
-    if (fallback_ && !r.exact && r.outcome != SearchOutcome::Cancelled && !cancelled())
+    // Where the search from the start ends without the goal (not stopped), the next searches
+    // in the time that is left: Hybrid A*'s finer manoeuvres (the lattice's nodes could not make
+    // it: a tight spot); and for a goal pose to be met exactly from a start pose, with
+    // reversing, each search also from the goal back to the start (CarLatticeQuery::
+    // timeReversed: leaving a slot is found where entering it is not). Those several run in
+    // turns on expansion budgets that grow fourfold a round (deterministic, and at most about
+    // 4/3 of each one's own expansions repeated), until one reaches the goal or all ran out;
+    // an answer is kept if it reaches the goal, or if there is none yet.
+    const bool fixedEnds = goal.kind == GoalTarget::Kind::State && q.goalYawTolerance == 0 && !freeStartHeading;
+    struct Stage
     {
-        // the lattice's nodes could not make it (a tight spot): Hybrid A*'s finer manoeuvres,
-        // in the time that is left; its answer is kept if it reaches the goal
-        CarLatticeResult h = fallback_->run(q, cost, cancelled, progress);
-        h.expanded += r.expanded;
-        if (h.exact || r.path.empty())
+        CarLatticeSearch *search;
+        bool reversed;
+        bool done{false};
+    };
+    std::vector<Stage> stages;
+    if (fixedEnds && search_->lattice().config().reverse) stages.push_back({search_.get(), true});
+    if (fallback_)
+    {
+        stages.push_back({fallback_.get(), false});
+        if (fixedEnds && fallback_->lattice().config().reverse) stages.push_back({fallback_.get(), true});
+    }
+    if (fine_)
+    {
+        stages.push_back({fine_.get(), false});
+        if (fixedEnds && fine_->lattice().config().reverse) stages.push_back({fine_.get(), true});
+    }
+    const bool turns = stages.size() > 1;
+    std::uint64_t budget = turns ? 2000 : std::numeric_limits<std::uint64_t>::max();
+    auto pending = [&stages] {
+        return std::any_of(stages.begin(), stages.end(), [](const Stage &st) { return !st.done; });
+    };
+    while (!r.exact && r.outcome != SearchOutcome::Cancelled && !cancelled() && pending())
+    {
+        for (Stage &st : stages)
         {
-            r = std::move(h);
-            last_ = fallback_.get();
+            if (st.done || r.exact || cancelled()) continue;
+            std::atomic<std::uint64_t> count{0};
+            const std::function<bool()> stop = [&] { return cancelled() || count.load(std::memory_order_relaxed) >= budget; };
+            CarLatticeQuery b = q;
+            if (st.reversed)
+            {
+                std::swap(b.start, b.goal);
+                b.timeReversed = true;
+                b.inGoal = nullptr;
+            }
+            CarLatticeResult h = st.search->run(b, cost, stop, &count);
+            if (progress) *progress += h.expanded;
+            if (h.exact && st.reversed) std::reverse(h.path.begin(), h.path.end());
+            // found or ran out: another round would repeat it
+            st.done = h.outcome != SearchOutcome::Cancelled || !turns;
+            h.expanded += r.expanded;
+            if (h.exact || r.path.empty())
+            {
+                r = std::move(h);
+                last_ = st.search;
+            }
+            else
+                r.expanded = h.expanded;
         }
-        else
-            r.expanded = h.expanded;
+        budget = budget > std::numeric_limits<std::uint64_t>::max() / 4 ? budget : 4 * budget;
     }
     if (r.exact && options.curvatureRate > 0 && r.path.size() > 2) smooth(options, r.path, cancelled);
     run.searchSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

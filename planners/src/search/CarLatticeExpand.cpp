@@ -104,7 +104,7 @@ struct CarExpander
             double step = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
             step += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
             const std::int8_t gear = prim.reverse ? -1 : 1;
-            if (prim.reverse) step *= S.query_.reversePenalty;
+            if (prim.reverse != S.query_.timeReversed) step *= S.query_.reversePenalty;  // driven backwards
             if (S.gear_[s] != 0 && S.gear_[s] != gear) step += S.query_.cuspPenalty;  // a gear change
             emit(id, step, [this, id, p, hn, gear, end] {
                 S.prim_[id] = std::int16_t(p);

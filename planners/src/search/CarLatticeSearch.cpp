@@ -313,6 +313,7 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         if (crossesCostlierGround(query_, poses)) continue;
         shot_ = std::move(poses);
         shotFrom_ = s;
+        if (query_.timeReversed) std::swap(forward, backward);  // driven in the other gear
         shotCost_ = cost.stepCost(from, shot_, forward + query_.reversePenalty * backward, turn) +
                     gearChanges * query_.cuspPenalty +
                     query_.layerCost(shot_, forward + backward) * cost.costPerMetreOfPenalty();

@@ -44,8 +44,9 @@ class CarFamily
 {
 public:
     /// (Re)builds the search when @p cfg or @p collision differ from the last set-up; with
-    /// @p fallback, a second search on that primitive set (the hybrid one) that a query runs
-    /// when the first ends without reaching the goal and time is left.
+    /// @p fallback, further searches on that primitive set (the hybrid one) and on it at half
+    /// its cell, that a query runs when the first ends without reaching the goal and time is
+    /// left (solve() says in which order).
     void setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision,
                const CarLatticeConfig *fallback = nullptr);
     /// The search of the last query (the first one before any; null before setup()).
@@ -63,7 +64,8 @@ public:
 private:
     void smooth(const CarSearchOptions &options, std::vector<Pose2> &path, const std::function<bool()> &cancelled);
     std::shared_ptr<CarCollision> collision_;
-    std::unique_ptr<CarLatticeSearch> search_, fallback_;
+    /// the lattice; the hybrid fallback; the hybrid at half its cell, where both ran out
+    std::unique_ptr<CarLatticeSearch> search_, fallback_, fine_;
     const CarLatticeSearch *last_{nullptr};
 };
 

@@ -74,6 +74,12 @@ struct CarLatticeQuery
     /// Factor (>= 1) on the cost of a primitive driven backwards (the primitive set's reverse
     /// ones, the reversed segments of the analytic expansion).
     double reversePenalty{1.0};
+    /// Searched from the goal back to the start (start and goal swapped by the caller, the path
+    /// read backwards afterwards): every motion is driven in the other gear than it is searched,
+    /// so reversePenalty weighs the primitives and curve segments searched forwards. A manoeuvre
+    /// into a tight spot is a manoeuvre out of it read backwards, and getting out is what a
+    /// search finds quickly (few ways lead in; from inside, the first free motion leads out).
+    bool timeReversed{false};
     /// Cost (>= 0, the cost model's unit) of a gear change: between a state reached forwards
     /// and a motion backwards, or the other way, and at every cusp of the analytic expansion.
     double cuspPenalty{0.0};
