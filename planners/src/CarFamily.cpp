@@ -26,11 +26,11 @@ void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision>
     fine_.reset();
     if (!fallback) return;
     fallback_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(*fallback));
-    // the hybrid nodes halved (a gap the fallback's cells are too coarse for), down to 2.5 cm
-    CarLatticeConfig fine = *fallback;
-    fine.cell = fallback->cell / 2;
-    fine.spacing = std::min(fine.spacing, fine.cell / 2);
-    if (fine.cell >= 0.025) fine_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(fine));
+    // the hybrid nodes halved (a gap the fallback's cells are too coarse for), down to 2.5 cm;
+    // built when a query first needs it (its primitives cost a set-up the others should not pay)
+    fineConfig_ = *fallback;
+    fineConfig_.cell = fallback->cell / 2;
+    fineConfig_.spacing = std::min(fineConfig_.spacing, fineConfig_.cell / 2);
 }
 
 FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
@@ -93,10 +93,11 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         stages.push_back({fallback_.get(), false});
         if (fixedEnds && fallback_->lattice().config().reverse) stages.push_back({fallback_.get(), true});
     }
-    if (fine_)
+    const bool fine = fallback_ && fineConfig_.cell >= 0.025;
+    if (fine)
     {
-        stages.push_back({fine_.get(), false});
-        if (fixedEnds && fine_->lattice().config().reverse) stages.push_back({fine_.get(), true});
+        stages.push_back({nullptr, false});
+        if (fixedEnds && fineConfig_.reverse) stages.push_back({nullptr, true});
     }
     const bool turns = stages.size() > 1;
     std::uint64_t budget = turns ? 2000 : std::numeric_limits<std::uint64_t>::max();
@@ -108,6 +109,11 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         for (Stage &st : stages)
         {
             if (st.done || r.exact || cancelled()) continue;
+            if (!st.search)
+            {
+                if (!fine_) fine_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(fineConfig_));
+                st.search = fine_.get();
+            }
             std::atomic<std::uint64_t> count{0};
             const std::function<bool()> stop = [&] { return cancelled() || count.load(std::memory_order_relaxed) >= budget; };
             CarLatticeQuery b = q;

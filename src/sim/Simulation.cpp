@@ -78,17 +78,21 @@ VehicleState turnedRound(VehicleState s)
 constexpr double kCuspReach = 1.0;
 
 /// Where a piece's curvature jumps faster than the wheels can follow at a crawl (a lattice
-/// path's arcs at full lock against straights or the opposite lock), the piece is cut: the car
+/// path's arcs at full lock against straights or the opposite lock) in a tight spot, the piece is cut: the car
 /// stops there and turns its wheels at a standstill before it goes on, as a driver does in a
 /// tight manoeuvre. Driven through, such a jump leaves the heading lagging by about half the
 /// jump times the distance the wheels take to turn (0.1 rad for paper C's car reversing into a
 /// parallel slot), which a body a few centimetres from a parked car has no room for. A jump is
 /// a change of the wheel angle, atan(wheelbase x curvature), between two neighbouring vertices
 /// of more than the steering rate turns while the car crawls (min(0.1 v_max, 0.5 m/s)) over
-/// the step between them; cuts closer than 0.3 m to the last one, or to either end, are merged
-/// away. A path that is not followable (a grid path's kinks, beyond K_max) is not cut.
-std::vector<std::vector<Pose2>> cutAtSteeringJumps(const std::vector<Pose2> &poses, const VehicleParams &veh)
+/// the step between them, where the body on the path passes within kTightClearance of the map
+/// in the next 2 m (in the open the lag costs nothing, and a stop there only time); cuts closer
+/// than 0.3 m to the last one, or to either end, are merged away. A path that is not followable
+/// (a grid path's kinks, beyond K_max) is not cut. @p poses carry the body's yaw.
+constexpr double kTightClearance = 0.3;
+std::vector<std::vector<Pose2>> cutAtSteeringJumps(const std::vector<Pose2> &poses, const FootprintChecker &checker)
 {
+    const VehicleParams &veh = checker.vehicle();
     std::vector<Pose2> pts;
     for (const Pose2 &p : poses)
         if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
@@ -119,7 +123,10 @@ std::vector<std::vector<Pose2>> cutAtSteeringJumps(const std::vector<Pose2> &pos
         // the jump is spread over the two vertices round a primitive's joint: cut at the first
         if (cum[i] < 0.3 || cum.back() - cum[i] < 0.3) continue;
         if (!cuts.empty() && cum[i] - cum[cuts.back()] < 0.3) continue;
-        cuts.push_back(i);
+        bool tight = false;
+        for (std::size_t j = i; j < pts.size() && cum[j] - cum[i] <= 2.0 && !tight; ++j)
+            tight = checker.clearance(pts[j].x, pts[j].y, pts[j].yaw) < kTightClearance;
+        if (tight) cuts.push_back(i);
     }
     if (cuts.empty()) return {poses};
     std::vector<std::vector<Pose2>> out;
@@ -332,7 +339,7 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         for (std::size_t i = 1; i < p.poses.size(); ++i)
             len += std::hypot(p.poses[i].x - p.poses[i - 1].x, p.poses[i].y - p.poses[i - 1].y);
         if (len <= 1e-9) continue;
-        for (std::vector<Pose2> &cut : cutAtSteeringJumps(p.poses, veh)) pieces.push_back({std::move(cut), p.backward});
+        for (std::vector<Pose2> &cut : cutAtSteeringJumps(p.poses, checker)) pieces.push_back({std::move(cut), p.backward});
     }
     if (pieces.empty())
     {

@@ -66,6 +66,7 @@ private:
     std::shared_ptr<CarCollision> collision_;
     /// the lattice; the hybrid fallback; the hybrid at half its cell, where both ran out
     std::unique_ptr<CarLatticeSearch> search_, fallback_, fine_;
+    CarLatticeConfig fineConfig_;  ///< fine_'s primitive set (fine_ is built on first use)
     const CarLatticeSearch *last_{nullptr};
 };
 
