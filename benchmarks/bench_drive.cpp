@@ -156,7 +156,15 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
             ++t.exact;
             if (!r.drivability.drivable) continue;
             ++t.drivable;
-            if (r.drivability.maxCurvatureRate <= 1.02 * v.curvatureRateLimit()) ++t.withinRate;
+            if (r.drivability.maxCurvatureRate <= 1.02 * v.curvatureRateLimit())
+                ++t.withinRate;
+            else
+                std::fprintf(stderr, "  %s %s %s pair %zu (%.2f, %.2f, yaw %.4f -> %.2f, %.2f): curvature rate %.3g 1/m^2, over the vehicle's %.3g\n",
+                             area.name.c_str(), area.vehicle.c_str(), label.c_str(), k, s.x, s.y, s.yaw, g.x, g.y,
+                             r.drivability.maxCurvatureRate, v.curvatureRateLimit());
+            if (!o.dumpDir.empty() && r.drivability.maxCurvatureRate > 1.02 * v.curvatureRateLimit())
+                writeCsv(o.dumpDir + "/" + area.name + "-" + area.vehicle + "-" + name + "-" + std::to_string(k) + "-rate-path.csv",
+                         r.path);
             for (int m = 0; m < (o.noMoving ? 1 : 2); ++m)
             {
                 const DriveResult d = drivePath(r.path, *setup.checker, m ? crossing(r.path, v) : Scenario());

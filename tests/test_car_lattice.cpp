@@ -303,7 +303,8 @@ TEST(CarLattice, GrownFootprintAgreesOnTheNativeTsudanumaMap)
 }
 
 // The planners with clothoid turns (`turns=clothoid`): round the wall of wallMap(), paper I's
-// car, exact and drivable paths whose curvature changes within the vehicle's rate.
+// car, exact and drivable paths whose curvature changes within the vehicle's rate, to a goal
+// pose on the lattice and to one off it, reached by the analytic expansion (clothoidCurves()).
 TEST(CarLattice, ClothoidTurnsGivePathsWithinTheCurvatureRate)
 {
     GridSetup setup = test::carSetup(SpaceKind::SE2);
@@ -315,5 +316,13 @@ TEST(CarLattice, ClothoidTurnsGivePathsWithinTheCurvatureRate)
         ASSERT_EQ(q.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         EXPECT_TRUE(q.drivability.drivable) << name << ": " << q.drivability.reason;
         EXPECT_LE(q.drivability.maxCurvatureRate, 1.02 * v.curvatureRateLimit()) << name;
+        // a goal pose off the lattice (position and heading): the analytic expansion ends the
+        // path, with clothoid turns too (a Dubins curve's arcs there would break the rate)
+        const QueryResult f = runQuery(setup, planner, {5, 5, M_PI / 2}, {52.37, 7.91, -1.2}, 30.0, false);
+        ASSERT_EQ(f.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
+        EXPECT_TRUE(f.drivability.drivable) << name << ": " << f.drivability.reason;
+        EXPECT_NEAR(f.path.back().x, 52.37, 1e-6);
+        EXPECT_NEAR(f.path.back().y, 7.91, 1e-6);
+        EXPECT_LE(f.drivability.maxCurvatureRate, 1.02 * v.curvatureRateLimit()) << name;
     }
 }

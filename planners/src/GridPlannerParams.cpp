@@ -219,7 +219,7 @@ CarLatticeConfig GridPlanner::carLatticeConfig(bool hybrid) const
     cfg.turnRadius = rmin > 0 ? 1.01 * rmin : cfg.cell;
     cfg.reverse = reversing();
     // clothoid turns a little inside the rate, so that sampled paths measure within it
-    if (params_.turns == "clothoid" && !hybrid)
+    if (params_.turns == "clothoid")
     {
         const double sigma = params_.curvatureRate > 0 ? params_.curvatureRate : vehicle().curvatureRateLimit();
         if (std::isfinite(sigma) && sigma > 0) cfg.curvatureRate = 0.95 * sigma;

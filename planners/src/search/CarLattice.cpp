@@ -103,9 +103,23 @@ void CarLattice::addHybrid()
                 const CurveSegment seg{steer, gear * length};
                 const Pose2 end = driveSegment({}, seg, r > 0 ? r : 1.0);
                 p.turn = end.yaw;
-                const double travel = r > 0 ? length * (1.0 + config_.reach / r) : length;
+                // with a curvature rate, the same change of heading as a clothoid turn (longer)
+                const bool clothoid = r > 0 && config_.curvatureRate > 0;
+                const double delta = steer == Steer::Left ? length / r : -length / r;
+                if (clothoid) p.length = turnLength(delta, r);
+                const double travel = r > 0 ? p.length * (1.0 + config_.reach / r) : p.length;
                 const int n = std::max(1, int(std::ceil(travel / config_.spacing - 1e-9)));
-                for (int k = 1; k <= n; ++k) p.samples.push_back(driveSegment({}, {steer, gear * length * k / n}, r > 0 ? r : 1.0));
+                for (int k = 1; k <= n; ++k)
+                {
+                    if (!clothoid)
+                    {
+                        p.samples.push_back(driveSegment({}, {steer, gear * length * k / n}, r > 0 ? r : 1.0));
+                        continue;
+                    }
+                    const Pose2 q = turnPose(delta, r, p.length * k / n);  // backwards: mirrored along x
+                    p.samples.push_back(gear > 0 ? q : Pose2{-q.x, q.y, -q.yaw});
+                }
+                if (clothoid) p.turn = p.samples.back().yaw;
                 prims_[0].push_back(std::move(p));
             }
 }
@@ -143,46 +157,27 @@ void CarLattice::addStraight(int h)
     prims_[h].push_back(std::move(p));
 }
 
+const ClothoidTurn &CarLattice::clothoidTurn(double R) const
+{
+    auto it = turns_.find(R);
+    if (it == turns_.end()) it = turns_.emplace(R, ClothoidTurn(R, config_.curvatureRate)).first;
+    return it->second;
+}
+
 double CarLattice::turnLength(double delta, double R) const
 {
-    const double d = std::abs(delta), K = 1.0 / R, sigma = config_.curvatureRate;
-    if (!(sigma > 0)) return R * d;
-    if (d * sigma <= K * K) return 2.0 * std::sqrt(d / sigma);  // two clothoids, peak below 1 / R
-    return 2.0 * K / sigma + (d - K * K / sigma) / K;            // clothoid, arc at 1 / R, clothoid
+    if (!(config_.curvatureRate > 0)) return R * std::abs(delta);
+    return clothoidTurn(R).length(delta);  // clothoid, arc at 1 / R (or a lower peak), clothoid
 }
 
 Pose2 CarLattice::turnPose(double delta, double R, double s) const
 {
-    const double sg = delta >= 0 ? 1.0 : -1.0, d = std::abs(delta), sigma = config_.curvatureRate;
-    if (!(sigma > 0))
+    if (!(config_.curvatureRate > 0))
     {
-        const double phi = sg * s / R;
-        return {R * std::sin(std::abs(phi)), sg * R * (1.0 - std::cos(phi)), phi};
+        const double phi = (delta >= 0 ? 1.0 : -1.0) * s / R;
+        return {R * std::sin(std::abs(phi)), (delta >= 0 ? 1.0 : -1.0) * R * (1.0 - std::cos(phi)), phi};
     }
-    // curvature profile: up at sigma to the peak, the peak held (arc), down at sigma to 0
-    const double K = 1.0 / R, L = turnLength(delta, R);
-    const double peak = d * sigma <= K * K ? std::sqrt(d * sigma) : K, rise = peak / sigma, hold = L - 2.0 * rise;
-    const auto theta = [&](double u) {
-        if (u <= rise) return 0.5 * sigma * u * u;
-        const double t1 = 0.5 * sigma * rise * rise;
-        if (u <= rise + hold) return t1 + peak * (u - rise);
-        const double v = u - rise - hold;
-        return t1 + peak * hold + peak * v - 0.5 * sigma * v * v;
-    };
-    // position by Simpson's rule on cos / sin of the heading (fine steps: error below 1e-9 m)
-    s = std::clamp(s, 0.0, L);
-    const int n = std::max(2, 2 * int(std::ceil(s / 0.01)));
-    const double hstep = s / n;
-    double x = 0, y = 0;
-    for (int i = 0; i <= n; ++i)
-    {
-        const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0), th = theta(i * hstep);
-        x += w * std::cos(th);
-        y += w * std::sin(th);
-    }
-    x *= hstep / 3.0;
-    y *= hstep / 3.0;
-    return {x, sg * y, sg * theta(s)};
+    return clothoidTurn(R).pose(delta, s);
 }
 
 bool CarLattice::addTurn(int h, int dir, double R)

@@ -25,6 +25,40 @@ CarLatticeSearch::CarLatticeSearch(std::shared_ptr<CarCollision> collision, std:
   : col_(std::move(collision)), lattice_(std::move(lattice))
 {
     ratio_ = measureRatio();
+    const CarLatticeConfig &cfg = lattice_->config();
+    if (cfg.curvatureRate > 0 && !cfg.reverse) clothoid_ = std::make_unique<ClothoidTurn>(cfg.turnRadius, cfg.curvatureRate);
+}
+
+bool CarLatticeSearch::clothoidShot(const Pose2 &from, const Pose2 &to, std::vector<Pose2> &poses, double &length,
+                                    double &turn) const
+{
+    const double K = 1.0 / clothoid_->radius();
+    for (const ClothoidCurve &c : clothoidCurves(from, to, *clothoid_, 2))
+    {
+        // each part sampled on its own, no body point moving more than the lattice's spacing
+        std::vector<double> arc;
+        double at = 0;
+        for (const double l : {clothoid_->length(c.delta1), c.straight, clothoid_->length(c.delta2)})
+        {
+            if (l < 1e-6)  // (a deflection of 1e-13 rad is a turn of 1e-7 m: no pose of its own)
+            {
+                at += l;
+                continue;
+            }
+            const int m = std::max(1, int(std::ceil(l * (1.0 + col_->reach() * K) / lattice_->config().spacing)));
+            for (int i = 1; i <= m; ++i) arc.push_back(at + l * i / m);
+            at += l;
+        }
+        if (arc.empty()) continue;
+        const auto poseAt = [&](int i) { return clothoidCurvePose(c, *clothoid_, arc[std::size_t(i - 1)]); };
+        if (!shotFree(from, int(arc.size()), poseAt)) continue;
+        poses.clear();
+        for (int i = 1; i <= int(arc.size()); ++i) poses.push_back(poseAt(i));
+        length = c.length;
+        turn = c.turning();
+        return true;
+    }
+    return false;
 }
 
 CarLatticeSearch::~CarLatticeSearch() = default;
@@ -205,6 +239,29 @@ bool crossesCostlierGround(const CarLatticeQuery &q, const std::vector<Pose2> &p
 }
 }  // namespace
 
+namespace
+{
+/// Arc lengths at which @p path is sampled: each segment on its own, its end included (a cusp
+/// is a pose of the path: a sample straddling it would make a kink), no body point (at most
+/// @p reach from the reference point) moving more than @p spacing between two samples.
+void sampleArcs(const CarCurve &path, double reach, double spacing, std::vector<double> &arc)
+{
+    arc.clear();
+    double at = 0;
+    for (int seg = 0; seg < path.count; ++seg)
+    {
+        const CurveSegment &sg = path.segments[std::size_t(seg)];
+        const double l = std::abs(sg.length);
+        if (l <= 0) continue;
+        const double travel = sg.steer == Steer::Straight ? l : l * (1.0 + reach / path.radius);
+        const int m = std::max(1, int(std::ceil(travel / spacing)));
+        for (int i = 1; i <= m; ++i) arc.push_back(at + l * i / m);
+        at += l;
+    }
+    if (arc.empty()) arc.push_back(path.length);
+}
+}  // namespace
+
 bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)
 {
     const auto k = unpack(states_.key(s));
@@ -265,22 +322,7 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         ++shotsTried_;
         const CarCurve &path = curves[std::size_t(index)];
         const double y = curveYaw[std::size_t(index)];
-        // each segment sampled on its own, its end included: a cusp is a pose of the path
-        // (a sample straddling it would make a kink), and no body point moves more than the
-        // lattice's spacing between two samples
-        arc.clear();
-        double at = 0;
-        for (int seg = 0; seg < path.count; ++seg)
-        {
-            const CurveSegment &sg = path.segments[std::size_t(seg)];
-            const double l = std::abs(sg.length);
-            if (l <= 0) continue;
-            const double travel = sg.steer == Steer::Straight ? l : l * (1.0 + col_->reach() / R);
-            const int m = std::max(1, int(std::ceil(travel / lattice_->config().spacing)));
-            for (int i = 1; i <= m; ++i) arc.push_back(at + l * i / m);
-            at += l;
-        }
-        if (arc.empty()) arc.push_back(len);
+        sampleArcs(path, col_->reach(), lattice_->config().spacing, arc);
         const int n = int(arc.size());
         auto poseAt = [&](int i) {
             Pose2 p = curvePose(from, path, std::min(arc[std::size_t(i - 1)], len));
@@ -307,8 +349,17 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
                 break;
             }
         std::vector<Pose2> poses;
-        poses.reserve(std::size_t(n));
-        for (int i = 1; i <= n; ++i) poses.push_back(poseAt(i));
+        if (clothoid_)
+        {
+            // the Dubins curve's arcs break the curvature rate: its clothoid counterpart (the
+            // free Dubins curve only tells where one is worth computing)
+            if (!clothoidShot(from, {g.x, g.y, y}, poses, forward, turn)) continue;
+        }
+        else
+        {
+            poses.reserve(std::size_t(n));
+            for (int i = 1; i <= n; ++i) poses.push_back(poseAt(i));
+        }
         poses.back() = {g.x, g.y, y};
         if (crossesCostlierGround(query_, poses)) continue;
         shot_ = std::move(poses);

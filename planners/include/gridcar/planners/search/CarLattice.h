@@ -5,9 +5,10 @@
 /// that join node to node exactly.
 
 #include "gridcar/core/Pose2.h"
+#include "gridcar/curves/ClothoidTurns.h"
 
 #include <array>
-
+#include <map>
 #include <vector>
 
 namespace gridcar
@@ -120,6 +121,10 @@ private:
     Pose2 turnPose(double delta, double R, double s) const;
     /// Its length.
     double turnLength(double delta, double R) const;
+    /// The clothoid turn at radius @p R and the configured curvature rate (built once per radius).
+    const ClothoidTurn &clothoidTurn(double R) const;
+    /// (used while the constructor builds the primitives only)
+    mutable std::map<double, ClothoidTurn> turns_;
 
     CarLatticeConfig config_;
     std::vector<std::array<int, 2>> vec_;

@@ -174,6 +174,11 @@ public:
     /// condition every 64 poses (a thousand poses on a slow application checker take tens of
     /// ms) and answers false when it fired.
     bool shotFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const;
+    /// With clothoid turns (forwards only): a turn-straight-turn curve of the same turns from
+    /// @p from to @p to whose body is free (the two shortest tried), sampled as the shot is, in
+    /// @p poses with its length and turning; false when neither is free. tryShot() takes it in
+    /// place of the Dubins curve, whose arcs would break the curvature rate.
+    bool clothoidShot(const Pose2 &from, const Pose2 &to, std::vector<Pose2> &poses, double &length, double &turn) const;
 
 private:
     friend struct CarExpander;
@@ -224,6 +229,7 @@ private:
     std::vector<Pose2> shot_;
     double shotCost_{0};
     int shotsTried_{0};
+    std::unique_ptr<ClothoidTurn> clothoid_;  ///< the lattice's turns, for clothoidShot() (null: arcs or reversing)
     const std::function<bool()> *cancelled_{nullptr};  ///< the running query's (run())
 };
 
