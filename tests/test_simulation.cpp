@@ -176,9 +176,9 @@ TEST(Simulation, ScenarioFilesAreReadAndBadOnesNamed)
 TEST(Simulation, TheWheelsTurnAtAStandstillWhereTheCurvatureJumps)
 {
     auto g = std::make_shared<OccupancyGrid>(600, 400, 0.1);
-    for (int r = 0; r < g->height(); ++r)  // a wall 0.2 m right of the car, up to x = 19 m
+    for (int r = 0; r < g->height(); ++r)  // a wall 0.1 m right of the car, up to x = 20.5 m
         for (int c = 0; c < g->width(); ++c)
-            if (std::abs(g->cellCenterY(r) - 8.85) < 0.04 && g->cellCenterX(c) < 19.0) g->set(c, r, CellState::Occupied);
+            if (std::abs(g->cellCenterY(r) - 8.95) < 0.04 && g->cellCenterX(c) < 20.5) g->set(c, r, CellState::Occupied);
     GridSetup s = makeGridSetup(g, VehicleParams::preset("paper-c-car"));
     const VehicleParams &v = s.checker->vehicle();
     const double R = 1.01 * v.minTurningRadius();

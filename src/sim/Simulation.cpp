@@ -89,7 +89,7 @@ constexpr double kCuspReach = 1.0;
 /// in the next 2 m (in the open the lag costs nothing, and a stop there only time); cuts closer
 /// than 0.3 m to the last one, or to either end, are merged away. A path that is not followable
 /// (a grid path's kinks, beyond K_max) is not cut. @p poses carry the body's yaw.
-constexpr double kTightClearance = 0.3;
+constexpr double kTightClearance = 0.15;
 std::vector<std::vector<Pose2>> cutAtSteeringJumps(const std::vector<Pose2> &poses, const FootprintChecker &checker)
 {
     const VehicleParams &veh = checker.vehicle();
