@@ -164,3 +164,14 @@ TEST(PlannerRegistry, OmplClassNamesAndSuggestions)
         EXPECT_NE(std::string(e.what()).find("did you mean 'dijkstra'"), std::string::npos) << e.what();
     }
 }
+
+// OMPL's BIT* comes without sample pruning (its pruning hung past the time limit in OMPL 1.5.2,
+// PlannerFactory.cpp), and the parameter still sets it back for whoever wants it.
+TEST(PlannerRegistry, BitStarComesWithoutPruning)
+{
+    GridSetup s = makeGridSetup(wallsMap(), VehicleParams::preset("paper-c-robot"));
+    auto p = makePlanner(s.ss->getSpaceInformation(), "bitstar");
+    EXPECT_EQ(p->params()["use_graph_pruning"].getValue(), "0");
+    p->params().setParam("use_graph_pruning", "1");
+    EXPECT_EQ(p->params()["use_graph_pruning"].getValue(), "1");
+}
