@@ -78,9 +78,9 @@ VehicleState turnedRound(VehicleState s)
 constexpr double kCuspReach = 1.0;
 
 /// Where a piece's curvature jumps faster than the wheels can follow at a crawl (a lattice
-/// path's arcs at full lock against straights or the opposite lock) in a tight spot, the piece is cut: the car
-/// stops there and turns its wheels at a standstill before it goes on, as a driver does in a
-/// tight manoeuvre. Driven through, such a jump leaves the heading lagging by about half the
+/// path's arcs at full lock against straights or the opposite lock) in a tight spot, the piece
+/// is cut: the car stops there and turns its wheels at a standstill before it goes on, as a
+/// driver does in a tight manoeuvre. Driven through, such a jump leaves the heading lagging by about half the
 /// jump times the distance the wheels take to turn (0.1 rad for paper C's car reversing into a
 /// parallel slot), which a body a few centimetres from a parked car has no room for. A jump is
 /// a change of the wheel angle, atan(wheelbase x curvature), between two neighbouring vertices
@@ -281,13 +281,13 @@ struct DriveRun
         std::vector<Pose2> rev;
         double x, y;
         path.pointAt(s0, x, y);
-        const double turn = M_PI;
-        rev.push_back({x, y, wrapAngle(path.heading[path.segmentAt(s0)] + turn)});
+        // the driven stretch backwards, the body turned round (the other gear's mirrored car)
+        rev.push_back({x, y, wrapAngle(path.heading[path.segmentAt(s0)] + M_PI)});
         for (std::size_t i = path.pts.size(); i-- > 0;)
             if (path.cum[i] < s0 - 1e-6 && path.cum[i] > s0 - back + 1e-6)
-                rev.push_back({path.pts[i].x, path.pts[i].y, wrapAngle(path.heading[i] + turn)});
+                rev.push_back({path.pts[i].x, path.pts[i].y, wrapAngle(path.heading[i] + M_PI)});
         path.pointAt(s0 - back, x, y);
-        rev.push_back({x, y, wrapAngle(path.heading[path.segmentAt(s0 - back)] + turn)});
+        rev.push_back({x, y, wrapAngle(path.heading[path.segmentAt(s0 - back)] + M_PI)});
         const FootprintChecker &other = checkerFor(!backward);
         const detail::TrackedPath backPath(rev, other);
         if (backPath.pts.size() < 2) return true;
