@@ -7,11 +7,11 @@
 // pose's own yaw, no step sideways (each step along the pose's heading, forwards or backwards),
 // the goal pose reached; then driven by the simulation. Output: Markdown tables on stdout,
 // progress on stderr, optional pictures (--png-dir). See docs/performance.md.
+#include "gridcar/bench/Figure.h"
 #include "gridcar/bench/PlanQuery.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/map/ParkingScenes.h"
 #include "gridcar/path/Cusps.h"
-#include "gridcar/render/Render.h"
 #include "gridcar/sim/Simulation.h"
 
 #include <CLI/CLI.hpp>
@@ -148,40 +148,26 @@ std::string labelOf(const std::string &name, const PlannerParams &p)
     return s;
 }
 
-/// The car's outline at pose p.
-std::vector<std::pair<double, double>> outline(const VehicleParams &v, const Pose2 &p)
+/// The picture of a query's path (plot_figure.py through drawFigure(): axes in metres, a scale
+/// bar, a legend, the car's outline along the path, reverse segments in their own colour).
+void picture(const std::string &file, const OccupancyGrid &grid, const VehicleParams &v, const std::string &title,
+             const ParkingQuery &q, const std::vector<Pose2> &path)
 {
-    const double c = std::cos(p.yaw), s = std::sin(p.yaw), r = -v.rearOverhang, f = v.length - v.rearOverhang, w = v.width / 2;
-    std::vector<std::pair<double, double>> out;
-    for (const auto &[bx, by] : {std::pair{r, -w}, std::pair{f, -w}, std::pair{f, w}, std::pair{r, w}})
-        out.push_back({p.x + c * bx - s * by, p.y + s * bx + c * by});
-    return out;
-}
-
-void picture(const std::string &file, const OccupancyGrid &grid, const VehicleParams &v, const ParkingQuery &q,
-             const std::vector<Pose2> &path)
-{
-    MapCanvas cv(grid, 1200);
-    const Rgb fwd{30, 90, 220}, rev{230, 120, 0}, start{0, 160, 0}, goal{200, 0, 0}, body{120, 120, 120};
-    const std::vector<PathPiece> pieces = splitAtCusps(path);
-    for (const PathPiece &piece : pieces)
+    bench::Figure fig;
+    fig.title = title;
+    fig.vehicle = v;
+    fig.start = q.start;
+    fig.goal = q.goal;
+    fig.margin = 3.0;
+    fig.paths.push_back({"corner-astar", "tab:blue", path, true, 1.6});
+    try
     {
-        cv.polyline(piece.poses, piece.backward ? rev : fwd, 2);
-        // the body every 1.5 m along the piece
-        double s = 0;
-        for (std::size_t i = 1; i < piece.poses.size(); ++i)
-        {
-            s += std::hypot(piece.poses[i].x - piece.poses[i - 1].x, piece.poses[i].y - piece.poses[i - 1].y);
-            if (s >= 1.5)
-            {
-                cv.polygon(outline(v, piece.poses[i]), body);
-                s = 0;
-            }
-        }
+        bench::drawFigure(grid, fig, file, "bench_parking");
     }
-    cv.polygon(outline(v, q.start), start);
-    cv.polygon(outline(v, q.goal), goal);
-    cv.save(file);
+    catch (const std::exception &e)
+    {
+        std::fprintf(stderr, "bench_parking: no picture %s: %s\n", file.c_str(), e.what());
+    }
 }
 
 void printRuns(const std::vector<Run> &runs)
@@ -248,7 +234,8 @@ Run oursOnQuery(const Options &o, const std::string &vname, GridSetup &se2, cons
                  run.planner.c_str(), r.status.asString().c_str(), run.check.ok ? "checked" : run.check.why.c_str(),
                  run.check.length, run.check.cusps, r.seconds, static_cast<unsigned long long>(r.expanded), run.sim.c_str());
     if (!o.pngDir.empty() && name == "corner-astar")
-        picture(o.pngDir + "/" + fileStem(vname, q.name, "") + ".png", se2.checker->grid(), se2.checker->vehicle(), q, r.path);
+        picture(o.pngDir + "/" + fileStem(vname, q.name, "") + ".png", se2.checker->grid(), se2.checker->vehicle(),
+                vname + " " + q.name + ": corner-astar, " + r.status.asString(), q, r.path);
     return run;
 }
 
