@@ -11,7 +11,6 @@
 #include "gridcar/bench/PlanQuery.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/map/ParkingScenes.h"
-#include "gridcar/path/Cusps.h"
 #include "gridcar/sim/Simulation.h"
 
 #include <CLI/CLI.hpp>
