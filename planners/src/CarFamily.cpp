@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
-#include <vector>
 #include <utility>
+#include <vector>
 
 namespace gridcar
 {

@@ -348,13 +348,15 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         return res;
     }
     std::unique_ptr<FootprintChecker> reverseChecker;  // the mirrored vehicle, when a piece reverses or backs up
+    const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, checker.field().resolution());
+    DriveRun run{scenario, prm, tol, 0.0, res};
+    run.car = &checker;
+    run.mirror = &reverseChecker;
     std::vector<std::unique_ptr<detail::TrackedPath>> tracked;
     double budget = 0.0;
     for (PathPiece &p : pieces)
     {
-        if (p.backward && !reverseChecker)
-            reverseChecker = std::make_unique<FootprintChecker>(checker.gridPtr(), checker.fieldPtr(), mirrored(veh));
-        const FootprintChecker &fc = p.backward ? *reverseChecker : checker;
+        const FootprintChecker &fc = run.checkerFor(p.backward);
         if (p.backward)
             for (Pose2 &q : p.poses) q.yaw = wrapAngle(q.yaw + M_PI);
         tracked.push_back(std::make_unique<detail::TrackedPath>(p.poses, fc));
@@ -363,10 +365,7 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         // steering-rate cap included): 5 x length / v_max timed out a 30 m/s car on a campus
         budget += 10.0 + std::max(5.0 * tracked.back()->total / fc.vehicle().maxSpeed, 3.0 * tracked.back()->profile.time);
     }
-    const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, checker.field().resolution());
-    DriveRun run{scenario, prm, tol, prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget, res};
-    run.car = &checker;
-    run.mirror = &reverseChecker;
+    run.tmax = prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget;
     res.minClearance = detail::kInf;
     VehicleState st;
     st.x = pieces.front().poses.front().x;
@@ -378,8 +377,7 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
     for (std::size_t k = 0; k < pieces.size() && ok; ++k)
     {
         if (k > 0 && pieces[k].backward != pieces[k - 1].backward) st = turnedRound(st);
-        const FootprintChecker &fc = pieces[k].backward ? *reverseChecker : checker;
-        ok = run.piece(*tracked[k], fc, st, pieces[k].backward, k + 1 == pieces.size());
+        ok = run.piece(*tracked[k], run.checkerFor(pieces[k].backward), st, pieces[k].backward, k + 1 == pieces.size());
     }
     if (ok)
     {

@@ -21,6 +21,19 @@ CarLatticeSearch::CarLatticeSearch(const FootprintChecker &checker, std::shared_
 {
 }
 
+namespace
+{
+/// Arc lengths along a piece of @p length metres starting at @p at, appended to @p arc, its end
+/// included, no body point moving more than @p spacing between two of them (@p travel: how far
+/// the farthest body point moves along the piece); @p at advances past the piece.
+void appendArcs(double length, double travel, double spacing, double &at, std::vector<double> &arc)
+{
+    const int m = std::max(1, int(std::ceil(travel / spacing)));
+    for (int i = 1; i <= m; ++i) arc.push_back(at + length * i / m);
+    at += length;
+}
+}  // namespace
+
 CarLatticeSearch::CarLatticeSearch(std::shared_ptr<CarCollision> collision, std::shared_ptr<const CarLattice> lattice)
   : col_(std::move(collision)), lattice_(std::move(lattice))
 {
@@ -45,9 +58,7 @@ bool CarLatticeSearch::clothoidShot(const Pose2 &from, const Pose2 &to, std::vec
                 at += l;
                 continue;
             }
-            const int m = std::max(1, int(std::ceil(l * (1.0 + col_->reach() * K) / lattice_->config().spacing)));
-            for (int i = 1; i <= m; ++i) arc.push_back(at + l * i / m);
-            at += l;
+            appendArcs(l, l * (1.0 + col_->reach() * K), lattice_->config().spacing, at, arc);
         }
         if (arc.empty()) continue;
         const auto poseAt = [&](int i) { return clothoidCurvePose(c, *clothoid_, arc[std::size_t(i - 1)]); };
@@ -253,10 +264,7 @@ void sampleArcs(const CarCurve &path, double reach, double spacing, std::vector<
         const CurveSegment &sg = path.segments[std::size_t(seg)];
         const double l = std::abs(sg.length);
         if (l <= 0) continue;
-        const double travel = sg.steer == Steer::Straight ? l : l * (1.0 + reach / path.radius);
-        const int m = std::max(1, int(std::ceil(travel / spacing)));
-        for (int i = 1; i <= m; ++i) arc.push_back(at + l * i / m);
-        at += l;
+        appendArcs(l, sg.steer == Steer::Straight ? l : l * (1.0 + reach / path.radius), spacing, at, arc);
     }
     if (arc.empty()) arc.push_back(path.length);
 }
