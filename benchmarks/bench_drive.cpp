@@ -145,6 +145,11 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
         for (const auto &kv : parsePlannerParams(o.params)) all.push_back(kv);
         auto planner = configurePlanner(setup.ss->getSpaceInformation(), {name, all, true, false});
         const std::string label = name + (params.empty() ? "" : " " + params[0].first + "=" + params[0].second);
+        // the files of --failed-dir, one name per planner configuration (corner-astar and
+        // corner-astar cost=time wrote over each other's)
+        std::string fileLabel = label;
+        std::replace_if(fileLabel.begin(), fileLabel.end(), [](char ch) { return ch == ' ' || ch == '='; }, '-');
+        const std::string stemBase = o.dumpDir + "/" + area.name + "-" + area.vehicle + "-" + fileLabel + "-";
         Tally t;
         for (std::size_t k = 0; k < pairs.size(); ++k)
         {
@@ -159,12 +164,13 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
             if (r.drivability.maxCurvatureRate <= 1.02 * v.curvatureRateLimit())
                 ++t.withinRate;
             else
-                std::fprintf(stderr, "  %s %s %s pair %zu (%.2f, %.2f, yaw %.4f -> %.2f, %.2f): curvature rate %.3g 1/m^2, over the vehicle's %.3g\n",
-                             area.name.c_str(), area.vehicle.c_str(), label.c_str(), k, s.x, s.y, s.yaw, g.x, g.y,
-                             r.drivability.maxCurvatureRate, v.curvatureRateLimit());
-            if (!o.dumpDir.empty() && r.drivability.maxCurvatureRate > 1.02 * v.curvatureRateLimit())
-                writeCsv(o.dumpDir + "/" + area.name + "-" + area.vehicle + "-" + name + "-" + std::to_string(k) + "-rate-path.csv",
-                         r.path);
+            {
+                std::fprintf(stderr, "  %s %s %s pair %zu (%.2f, %.2f, yaw %.4f -> %.2f, %.2f): curvature rate %.3g 1/m^2, "
+                             "over the vehicle's %.3g\n", area.name.c_str(), area.vehicle.c_str(), label.c_str(), k, s.x, s.y,
+                             s.yaw, g.x, g.y, r.drivability.maxCurvatureRate, v.curvatureRateLimit());
+                if (!o.dumpDir.empty())
+                    writeCsv(stemBase + std::to_string(k) + "-rate-path.csv", r.path);
+            }
             for (int m = 0; m < (o.noMoving ? 1 : 2); ++m)
             {
                 const DriveResult d = drivePath(r.path, *setup.checker, m ? crossing(r.path, v) : Scenario());
@@ -189,8 +195,7 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
                     failures.push_back(buf + DriveResult::outcomeName(d.outcome) + ": " + d.reason);
                     if (!o.dumpDir.empty())
                     {
-                        std::string stem = o.dumpDir + "/" + area.name + "-" + area.vehicle + "-" + name + "-" +
-                                           std::to_string(k) + (m ? "-pedestrian" : "");
+                        const std::string stem = stemBase + std::to_string(k) + (m ? "-pedestrian" : "");
                         writeCsv(stem + "-path.csv", r.path);
                         if (FILE *f = std::fopen((stem + "-drive.csv").c_str(), "w"))
                         {
@@ -236,7 +241,8 @@ int main(int argc, char **argv)
     app.add_option("--param", o.params, "NAME=VALUE set on every planner (repeatable)");
     app.add_flag("--no-moving", o.noMoving, "drive without the pedestrian only");
     app.add_option("--failed-dir", o.dumpDir, "write the path and the simulated trajectory (with the pedestrian's position) of "
-                                              "every run that does not arrive here as CSV (an existing directory)");
+                                              "every run that does not arrive, and every path over the curvature rate "
+                                              "(NAME-rate-path.csv), here as CSV (an existing directory)");
     CLI11_PARSE(app, argc, argv);
     for (const std::string &a : o.only)
         if (std::none_of(kAreas.begin(), kAreas.end(), [&](const Area &x) { return x.name == a; }))
