@@ -1,5 +1,6 @@
 #pragma once
 // Maps and set-ups the planner tests share.
+#include "gridcar/map/ParkingScenes.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/Setup.h"
 
@@ -8,6 +9,7 @@
 #include <ompl/geometric/SimpleSetup.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace gridcar::test
@@ -31,6 +33,22 @@ inline std::shared_ptr<const OccupancyGrid> testMap()
         g->set(55, r, CellState::Occupied);
     }
     return g;
+}
+
+/// The parking scene named @p scene for @p vehicle (map/ParkingScenes.h), its query @p name in
+/// @p query, and a set-up on it.
+inline GridSetup parkingSetup(const std::string &vehicle, const std::string &scene, ParkingQuery &query, const std::string &name)
+{
+    const VehicleParams v = VehicleParams::preset(vehicle);
+    for (const ParkingScene &s : parkingScenes(v))
+        if (s.name == scene)
+            for (const ParkingQuery &q : s.queries)
+                if (q.name == name)
+                {
+                    query = q;
+                    return makeGridSetup(std::make_shared<const OccupancyGrid>(s.grid), v);
+                }
+    throw std::logic_error("no parking query " + name);
 }
 
 inline GridSetup testSetup(const std::string &vehicle = "point")

@@ -96,13 +96,14 @@ double pathLength(const std::vector<Pose2> &p)
 
 // The length-only car lattice from parts finds a drivable path whose cost is its length, and
 // the same path as corner A* with every corner weight 0 (the same search, its cost written out).
-// The path as searched: without the continuous-curvature step, which shortens it.
+// The path as searched: without the continuous-curvature step and the shortcut, which shorten it.
 TEST(PlannerParts, LengthOnlyCarLatticeFromParts)
 {
     GridSetup s = test::carSetup(SpaceKind::SE2);
     test::setPlainQuery(*s.ss, 10, 30, 50, 30);
     auto parts = std::make_shared<LengthLattice>(s.ss->getSpaceInformation());
     parts->setContinuousCurvature(false);
+    parts->setShortcut(false);
     s.ss->setPlanner(parts);
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
     const std::vector<Pose2> path = toPoses(s.ss->getSolutionPath());
@@ -121,6 +122,7 @@ TEST(PlannerParts, LengthOnlyCarLatticeFromParts)
     corner->setWeight45(0);
     corner->setWeight90(0);
     corner->setWeight135(0);
+    corner->setShortcut(false);
     s.ss->setPlanner(corner);
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_DOUBLE_EQ(corner->lastCost(), partsCost);

@@ -138,24 +138,6 @@ TEST(Reversing, PenaltiesAndWhereTheyAct)
     EXPECT_THROW(grid->setup(), std::invalid_argument);
 }
 
-namespace
-{
-/// The parking scene named @p scene for @p vehicle, with a set-up on it.
-GridSetup parkingSetup(const std::string &vehicle, const std::string &scene, ParkingQuery &query, const std::string &name)
-{
-    const VehicleParams v = VehicleParams::preset(vehicle);
-    for (const ParkingScene &s : parkingScenes(v))
-        if (s.name == scene)
-            for (const ParkingQuery &q : s.queries)
-                if (q.name == name)
-                {
-                    query = q;
-                    return makeGridSetup(std::make_shared<const OccupancyGrid>(s.grid), v);
-                }
-    throw std::logic_error("no parking query " + name);
-}
-}  // namespace
-
 // Out of a parallel slot the lattice's nodes cannot manoeuvre from the start (every primitive
 // longer than the gap allows), but the same search from the goal back into the slot finds the
 // way (CarLatticeQuery::timeReversed): primitives=lattice leaves exactly at the goal pose now,
@@ -164,7 +146,7 @@ TEST(Reversing, ASearchFromTheGoalLeavesAParallelSlot)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     ParkingQuery q;
-    GridSetup s = parkingSetup("paper-c-car", "parallel", q, "parallel/leave");
+    GridSetup s = test::parkingSetup("paper-c-car", "parallel", q, "parallel/leave");
     for (const char *prims : {"lattice", "auto"})
     {
         SCOPED_TRACE(prims);
@@ -195,7 +177,7 @@ TEST(Reversing, PaperIsCarParksInAndLeavesAParallelGap)
     {
         SCOPED_TRACE(name);
         ParkingQuery q;
-        GridSetup s = parkingSetup("paper-i", "parallel", q, name);
+        GridSetup s = test::parkingSetup("paper-i", "parallel", q, name);
         auto p = makePlanner(s.ss->getSpaceInformation(), "corner-astar");
         p->params().setParam("reverse", "on");
         const QueryResult r = runQuery(s, p, q.start, q.goal, 10.0);
@@ -216,7 +198,7 @@ TEST(Reversing, AGoalYawIsReachedByDefault)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     ParkingQuery q;
-    GridSetup s = parkingSetup("paper-c-car", "perpendicular", q, "perpendicular/back-in");
+    GridSetup s = test::parkingSetup("paper-c-car", "perpendicular", q, "perpendicular/back-in");
     auto p = makePlanner(s.ss->getSpaceInformation(), "improved-astar");
     p->params().setParam("reverse", "on");
     const QueryResult r = runQuery(s, p, q.start, q.goal, 5.0);

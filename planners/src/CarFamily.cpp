@@ -139,6 +139,12 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         }
         budget = budget > std::numeric_limits<std::uint64_t>::max() / 4 ? budget : 4 * budget;
     }
+    // what the lattice's few headings and coarse cells leave over, taken off by free curves
+    if (r.exact && options.shortcutCurves > 0)
+    {
+        const ShortcutReport sr = last_->shortcut(r.path, q, cost, cancelled, options.shortcutCurves);
+        r.cost += sr.costAfter - sr.costBefore;  // what was taken off, by the same measure
+    }
     if (r.exact && options.curvatureRate > 0 && r.path.size() > 2) smooth(options, r.path, cancelled);
     run.searchSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.expanded = r.expanded;

@@ -14,6 +14,12 @@
 
 namespace gridcar
 {
+namespace
+{
+/// Curves the path shortcut may try per query (CarLatticeSearch::shortcut()).
+constexpr int kShortcutCurves = 3000;
+}  // namespace
+
 GridPlanner::GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name)
   : ompl::base::Planner(si, name), support_(*this), goals_(si), dataStates_(si)
 {
@@ -145,6 +151,7 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
                                  cuspPenalty() * cost->costPerMetreOfPenalty(),
                                  params_.curveHeuristic ? 30.0 * carSearch()->lattice().config().turnRadius : 0.0,
                                  curvatureRate(), 1.0 / turningRadius()};
+        options.shortcutCurves = params_.shortcut ? kShortcutCurves : 0;
         if (params_.costLayerWeight > 0)
         {
             if (checker_ && checker_->grid().hasCosts())

@@ -32,6 +32,13 @@ void GridPlanner::declareCarLatticeParams()
     declareParam<double>("cost_layer_weight", this, &GridPlanner::setCostLayerWeight, &GridPlanner::costLayerWeight,
                          "0.:0.5:100.");
     declareParam<std::string>("turns", this, &GridPlanner::setTurns, &GridPlanner::turns, "arc,clothoid");
+    declareParam<bool>("shortcut", this, &GridPlanner::setShortcut, &GridPlanner::shortcut, "0,1");
+}
+
+void GridPlanner::setShortcut(bool on)
+{
+    params_.shortcut = on;
+    parameterSet("shortcut");
 }
 
 void GridPlanner::setTurns(const std::string &t)

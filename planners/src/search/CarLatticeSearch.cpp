@@ -3,6 +3,7 @@
 #include "gridcar/core/Angles.h"
 
 #include "gridcar/curves/CarCurves.h"
+#include "gridcar/planners/search/detail/CurveSampling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,18 +22,6 @@ CarLatticeSearch::CarLatticeSearch(const FootprintChecker &checker, std::shared_
 {
 }
 
-namespace
-{
-/// Arc lengths along a piece of @p length metres starting at @p at, appended to @p arc, its end
-/// included, no body point moving more than @p spacing between two of them (@p travel: how far
-/// the farthest body point moves along the piece); @p at advances past the piece.
-void appendArcs(double length, double travel, double spacing, double &at, std::vector<double> &arc)
-{
-    const int m = std::max(1, int(std::ceil(travel / spacing)));
-    for (int i = 1; i <= m; ++i) arc.push_back(at + length * i / m);
-    at += length;
-}
-}  // namespace
 
 CarLatticeSearch::CarLatticeSearch(std::shared_ptr<CarCollision> collision, std::shared_ptr<const CarLattice> lattice)
   : col_(std::move(collision)), lattice_(std::move(lattice))
@@ -58,7 +47,7 @@ bool CarLatticeSearch::clothoidShot(const Pose2 &from, const Pose2 &to, std::vec
                 at += l;
                 continue;
             }
-            appendArcs(l, l * (1.0 + col_->reach() * K), lattice_->config().spacing, at, arc);
+            detail::appendArcs(l, l * (1.0 + col_->reach() * K), lattice_->config().spacing, at, arc);
         }
         if (arc.empty()) continue;
         const auto poseAt = [&](int i) { return clothoidCurvePose(c, *clothoid_, arc[std::size_t(i - 1)]); };
@@ -250,25 +239,6 @@ bool crossesCostlierGround(const CarLatticeQuery &q, const std::vector<Pose2> &p
 }
 }  // namespace
 
-namespace
-{
-/// Arc lengths at which @p path is sampled: each segment on its own, its end included (a cusp
-/// is a pose of the path: a sample straddling it would make a kink), no body point (at most
-/// @p reach from the reference point) moving more than @p spacing between two samples.
-void sampleArcs(const CarCurve &path, double reach, double spacing, std::vector<double> &arc)
-{
-    arc.clear();
-    double at = 0;
-    for (int seg = 0; seg < path.count; ++seg)
-    {
-        const CurveSegment &sg = path.segments[std::size_t(seg)];
-        const double l = std::abs(sg.length);
-        if (l <= 0) continue;
-        appendArcs(l, sg.steer == Steer::Straight ? l : l * (1.0 + reach / path.radius), spacing, at, arc);
-    }
-    if (arc.empty()) arc.push_back(path.length);
-}
-}  // namespace
 
 bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)
 {
@@ -330,7 +300,7 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         ++shotsTried_;
         const CarCurve &path = curves[std::size_t(index)];
         const double y = curveYaw[std::size_t(index)];
-        sampleArcs(path, col_->reach(), lattice_->config().spacing, arc);
+        detail::sampleArcs(path, col_->reach(), lattice_->config().spacing, arc);
         const int n = int(arc.size());
         auto poseAt = [&](int i) {
             Pose2 p = curvePose(from, path, std::min(arc[std::size_t(i - 1)], len));

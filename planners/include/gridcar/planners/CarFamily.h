@@ -30,6 +30,8 @@ struct CarSearchOptions
     double maxCurvature{0.0};    ///< K_max (1/m) the replacements keep
     const OccupancyGrid *layer{nullptr};  ///< the map's cost layer (CarLatticeQuery::layer)
     double layerWeight{0.0};              ///< its weight (`cost_layer_weight`)
+    /// Curves CarLatticeSearch::shortcut() may try on a found path (0: no shortcut)
+    int shortcutCurves{0};
 };
 
 /**

@@ -50,6 +50,9 @@ struct GridPlannerParams
     /// `turns` (car lattice): arc (the lattice's turns are arcs at R_min) or clothoid (clothoid
     /// turns within the curvature rate: the searched path's curvature is continuous)
     std::string turns{"arc"};
+    /// `shortcut` (car lattice): a found path shortened by the analytic expansion's curves
+    /// where they are free, shorter and cheaper (CarLatticeSearch::shortcut())
+    bool shortcut{true};
 };
 
 /**
@@ -173,6 +176,10 @@ public:
     void setCurveHeuristic(bool on);
     bool continuousCurvature() const { return params_.continuousCurvature; }
     void setContinuousCurvature(bool on);
+    /// `shortcut`: a found path's stretches replaced by free, shorter and cheaper curves of the
+    /// analytic expansion (CarLatticeSearch::shortcut()); on by default.
+    bool shortcut() const { return params_.shortcut; }
+    void setShortcut(bool on);
     /// The `curvature_rate` parameter as set (0: the vehicle's, curvatureRateLimit()).
     double curvatureRateParam() const { return params_.curvatureRate; }
     void setCurvatureRate(double rate);
@@ -223,7 +230,7 @@ protected:
     virtual std::vector<std::string> carLatticeOnlyParams() const
     {
         return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "primitives", "curve_heuristic",
-                "continuous_curvature", "curvature_rate", "cost_layer_weight", "turns"};
+                "continuous_curvature", "curvature_rate", "cost_layer_weight", "turns", "shortcut"};
     }
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).

@@ -118,6 +118,17 @@ struct CarLatticeResult
     int shotsTried{0};
 };
 
+/// What CarLatticeSearch::shortcut() did to a path.
+struct ShortcutReport
+{
+    int curves{0};            ///< curves tried (each sampled and checked)
+    int replaced{0};          ///< stretches replaced by a curve
+    double lengthBefore{0.0}; ///< m
+    double lengthAfter{0.0};  ///< m
+    double costBefore{0.0};   ///< by the cost model, as shortcut() measures it
+    double costAfter{0.0};
+};
+
 /**
  * @brief A* over (node, heading) states of a CarLattice laid over the map with its origin at
  * the start position and its x axis along the start yaw (the start is always a node, whatever
@@ -179,6 +190,31 @@ public:
     /// @p poses with its length and turning; false when neither is free. tryShot() takes it in
     /// place of the Dubins curve, whose arcs would break the curvature rate.
     bool clothoidShot(const Pose2 &from, const Pose2 &to, std::vector<Pose2> &poses, double &length, double &turn) const;
+
+    /**
+     * @brief Shortens a found path (dense world poses, start first, ending where it must end)
+     * by the curves of the analytic expansion: between poses about 0.3 m apart along it (and
+     * its cusps; farther apart on a long path, at most about 80 of them), from each one the
+     * farthest later one that a curve of the lattice's family (Reeds-Shepp when it reverses,
+     * its clothoid turn-straight-turn curves with clothoid turns, else Dubins; the two
+     * shortest words) joins is reached by that curve, if the curve
+     * - is free with the body grown 5 cm beyond the search's margin (curveFree(): every
+     *   pose, swept motion certified as the search's own), so that it leaves a follower room
+     *   instead of grazing what the lattice kept clear of,
+     * - has no flick of the wheels (an arc between arcs of the other side shorter than a
+     *   quarter circle or 2 m),
+     * - is shorter than the stretch it replaces, costs less by @p cost with @p q's reverse and
+     *   cusp penalties and cost layer (each run of one gear and turning side costed as a
+     *   motion of the search), and adds no gear change.
+     * So the path keeps its ends and its guarantees (curvature within the lattice's turning
+     * radius; within its curvature rate with clothoid turns), never gets longer or costlier,
+     * and never gains a cusp: what a lattice's few headings and coarse cells leave over (a
+     * parking manoeuvre some metres longer than a continuous planner's) is taken off. Up to
+     * @p maxCurves curves are checked; @p cancelled is polled between them (the path is then
+     * kept as far as it got: still valid). Two passes at most.
+     */
+    ShortcutReport shortcut(std::vector<Pose2> &path, const CarLatticeQuery &q, const LatticeCostModel &cost,
+                            const std::function<bool()> &cancelled, int maxCurves) const;
 
 private:
     friend struct CarExpander;

@@ -1,0 +1,337 @@
+/// @file CarLatticeShortcut.cpp
+/// @brief A found path shortened by the analytic expansion's curves (CarLatticeSearch::shortcut()).
+#include "gridcar/planners/search/CarLatticeSearch.h"
+
+#include "gridcar/core/Angles.h"
+#include "gridcar/curves/CarCurves.h"
+#include "gridcar/curves/ClothoidTurns.h"
+#include "gridcar/planners/search/detail/CurveSampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridcar
+{
+namespace
+{
+/// Anchors (the poses a shortcut may start or end at) about this far apart along the path.
+constexpr double kAnchorStep = 0.3;
+constexpr double kMaxAnchors = 80;
+/// Room (m) a shortcut leaves between the body and the map beyond the search's own margin.
+constexpr double kClearance = 0.05;
+/// An arc between arcs of the other side is at least min(this, a quarter circle) long (m).
+constexpr double kMaxFlick = 2.0;
+
+/// The gear of the step from @p a to @p b: 1 forwards, -1 backwards (the displacement against
+/// the mean heading of both poses), 0 for a repeated pose.
+int stepGear(const Pose2 &a, const Pose2 &b)
+{
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    if (std::hypot(dx, dy) < 1e-9) return 0;
+    const double along = dx * (std::cos(a.yaw) + std::cos(b.yaw)) + dy * (std::sin(a.yaw) + std::sin(b.yaw));
+    return along < 0 ? -1 : 1;
+}
+
+/// The cost of driving poses[0..n] the way the search costs its motions: the path cut into
+/// runs of one gear and one turning side, each a stepCost() with its length and turning (and
+/// the cost layer), times the reverse penalty when driven backwards; plus the cusp penalty per
+/// gear change, counting one against @p before (the gear the car arrives in, 0: none) and
+/// @p after (the gear it leaves in). The number of gear changes goes to @p cusps.
+double stretchCost(const std::vector<Pose2> &poses, int before, int after, const CarLatticeQuery &q,
+                   const LatticeCostModel &cost, int &cusps)
+{
+    double total = 0;
+    cusps = 0;
+    int gear = before;
+    std::size_t a = 0;  // start of the current run
+    double len = 0, turn = 0;
+    int runGear = 0, side = 0;
+    std::vector<Pose2> samples;
+    const auto close = [&](std::size_t b) {
+        if (b <= a) return;
+        samples.assign(poses.begin() + std::ptrdiff_t(a) + 1, poses.begin() + std::ptrdiff_t(b) + 1);
+        double step = cost.stepCost(poses[a], samples, len, std::abs(turn)) +
+                      q.layerCost(samples, len) * cost.costPerMetreOfPenalty();
+        if (runGear < 0) step *= q.reversePenalty;
+        total += step;
+    };
+    for (std::size_t k = 0; k + 1 < poses.size(); ++k)
+    {
+        const Pose2 &p = poses[k], &r = poses[k + 1];
+        int g = stepGear(p, r);
+        if (g == 0) g = gear != 0 ? gear : 1;
+        const double ds = std::hypot(r.x - p.x, r.y - p.y);
+        const double dyaw = wrapAngle(r.yaw - p.yaw);
+        const int s = std::abs(dyaw) <= 1e-6 * std::max(ds, 1e-9) + 1e-12 ? 0 : (dyaw > 0 ? 1 : -1);
+        if (gear != 0 && g != gear) ++cusps;
+        if (k > 0 && (g != runGear || (s != 0 && side != 0 && s != side)))
+        {
+            close(k);
+            a = k;
+            len = turn = 0;
+            side = 0;
+        }
+        runGear = g;
+        if (s != 0) side = s;
+        len += ds;
+        turn += dyaw;
+        gear = g;
+    }
+    close(poses.size() - 1);
+    if (after != 0 && gear != 0 && after != gear) ++cusps;
+    return total + cusps * q.cuspPenalty;
+}
+
+double lengthOf(const std::vector<Pose2> &p)
+{
+    double l = 0;
+    for (std::size_t k = 1; k < p.size(); ++k) l += std::hypot(p[k].x - p[k - 1].x, p[k].y - p[k - 1].y);
+    return l;
+}
+
+/// One shortcut run over a path (CarLatticeSearch::shortcut()): the candidate curves between
+/// two of its poses, their tests, one pass along the path.
+class Shortcutter
+{
+public:
+    struct Geometry
+    {
+        const CarCollision &col;
+        const ClothoidTurn *clothoid;  ///< the lattice's clothoid turns (null: arcs)
+        double radius, spacing, reach, margin;
+        bool reverse;
+    };
+    Shortcutter(const Geometry &g, const CarLatticeQuery &q, const LatticeCostModel &cost,
+                const std::function<bool()> &cancelled, int maxCurves, ShortcutReport &rep)
+      : g_(g), q_(q), cost_(cost), cancelled_(cancelled), maxCurves_(maxCurves), rep_(rep),
+        minFlick_(std::min(kMaxFlick, M_PI / 2 * g.radius))
+    {
+    }
+
+    bool stopped() const { return rep_.curves >= maxCurves_ || (cancelled_ && cancelled_()); }
+
+    /// One pass along @p path; true if it replaced a stretch.
+    bool pass(std::vector<Pose2> &path)
+    {
+        const std::size_t n = path.size();
+        std::vector<double> s(n, 0.0);
+        std::vector<int> gear(n, 0);  // gear of the step from pose k to k + 1 (last: 0)
+        for (std::size_t k = 1; k < n; ++k) s[k] = s[k - 1] + std::hypot(path[k].x - path[k - 1].x, path[k].y - path[k - 1].y);
+        for (std::size_t k = 0; k + 1 < n; ++k)
+        {
+            gear[k] = stepGear(path[k], path[k + 1]);
+            if (gear[k] == 0 && k > 0) gear[k] = gear[k - 1];
+        }
+        // anchors: every kAnchorStep (at most about kMaxAnchors of them on a long path: the
+        // pairs tried grow as their square), every cusp, both ends
+        const double step = std::max(kAnchorStep, s[n - 1] / kMaxAnchors);
+        std::vector<std::size_t> anchor{0};
+        for (std::size_t k = 1; k + 1 < n; ++k)
+        {
+            const bool cusp = gear[k] != 0 && gear[k - 1] != 0 && gear[k] != gear[k - 1];
+            if (cusp || s[k] - s[anchor.back()] >= step) anchor.push_back(k);
+        }
+        anchor.push_back(n - 1);
+
+        std::vector<Pose2> out{path[0]};
+        int arrive = 0;  // the gear of out's last step
+        bool changed = false;
+        std::size_t ia = 0;
+        while (ia + 1 < anchor.size() && !stopped())
+        {
+            const std::size_t i = anchor[ia];
+            std::size_t next = ia + 1;
+            for (std::size_t ja = anchor.size() - 1; ja >= ia + 2 && next == ia + 1 && !stopped(); --ja)
+            {
+                const std::size_t j = anchor[ja];
+                const double oldLength = s[j] - s[i];
+                if (std::hypot(path[j].x - path[i].x, path[j].y - path[i].y) >= oldLength - 1e-3) continue;  // no curve is shorter
+                old_.assign(path.begin() + std::ptrdiff_t(i), path.begin() + std::ptrdiff_t(j) + 1);
+                if (replace(old_, oldLength, arrive, j + 1 < n ? gear[j] : 0, out)) next = ja;
+            }
+            if (next == ia + 1)
+                out.insert(out.end(), path.begin() + std::ptrdiff_t(i) + 1, path.begin() + std::ptrdiff_t(anchor[ia + 1]) + 1);
+            else
+            {
+                ++rep_.replaced;
+                changed = true;
+            }
+            ia = next;
+            for (std::size_t k = out.size() - 1; k > 0; --k)
+                if (const int gr = stepGear(out[k - 1], out[k]); gr != 0)
+                {
+                    arrive = gr;
+                    break;
+                }
+        }
+        if (ia + 1 < anchor.size())  // stopped: the rest as it was
+            out.insert(out.end(), path.begin() + std::ptrdiff_t(anchor[ia]) + 1, path.end());
+        if (changed) path = std::move(out);
+        return changed;
+    }
+
+private:
+    /// The first candidate curve from old's first to its last pose that passes every test,
+    /// appended to @p out (its first pose left out); false if none does.
+    bool replace(const std::vector<Pose2> &old, double oldLength, int arrive, int leave, std::vector<Pose2> &out)
+    {
+        const Pose2 &a = old.front(), &b = old.back();
+        double oldCost = -1;
+        int oldCusps = 0;
+        bool found = false;
+        forCurves(a, b, oldLength - 1e-3, [&] {
+            ++rep_.curves;
+            if (!free(a, b)) return !stopped();
+            if (oldCost < 0) oldCost = stretchCost(old, arrive, leave, q_, cost_, oldCusps);
+            joined_.assign(1, a);
+            joined_.insert(joined_.end(), curve_.begin(), curve_.end());
+            int newCusps = 0;
+            const double newCost = stretchCost(joined_, arrive, leave, q_, cost_, newCusps);
+            if (newCusps > oldCusps || !(newCost < oldCost - 1e-9)) return !stopped();
+            out.insert(out.end(), curve_.begin(), curve_.end());
+            found = true;
+            return false;
+        });
+        return found;
+    }
+
+    /// The candidate's body free with the grown margin: every 8th pose first (a blocked curve
+    /// is mostly refused by one of those; the Reeds-Shepp / Dubins poses are computed only as
+    /// far as needed), then every pose (certifying the motion as the search's own test does).
+    bool free(const Pose2 &a, const Pose2 &b)
+    {
+        const bool lazy = curve_.empty();
+        const int m = lazy ? int(refs_.size()) : int(curve_.size());
+        const auto poseAt = [&](int k) {
+            if (!lazy) return curve_[std::size_t(k - 1)];
+            if (k == m) return b;
+            Pose2 p = driveSegment(refs_[std::size_t(k - 1)].from, refs_[std::size_t(k - 1)].part, g_.radius);
+            p.yaw = wrapYaw(p.yaw);
+            return p;
+        };
+        if (m / 8 > 1 && !g_.col.curveFree(a, m / 8, [&](int k) { return poseAt(8 * k); }, g_.margin)) return false;
+        if (lazy)
+            for (int k = 1; k <= m; ++k) curve_.push_back(poseAt(k));
+        return g_.col.curveFree(a, m, [&](int k) { return curve_[std::size_t(k - 1)]; }, g_.margin);
+    }
+
+    /// Calls @p take() for the curves of the lattice's family from @p a to @p b shorter than
+    /// @p shorterThan, shortest first (curve_ holds the clothoid candidate's poses, refs_ the
+    /// Reeds-Shepp / Dubins candidate's samples), until it returns false.
+    template <class Take>
+    void forCurves(const Pose2 &a, const Pose2 &b, double shorterThan, const Take &take)
+    {
+        if (g_.clothoid)
+        {
+            const ClothoidTurn &turn = *g_.clothoid;
+            for (const ClothoidCurve &c : clothoidCurves(a, b, turn, 2))
+            {
+                if (!(c.length < shorterThan)) break;
+                arc_.clear();
+                double at = 0;
+                for (const double l : {turn.length(c.delta1), c.straight, turn.length(c.delta2)})
+                {
+                    if (l < 1e-6)
+                    {
+                        at += l;
+                        continue;
+                    }
+                    detail::appendArcs(l, l * (1.0 + g_.reach / turn.radius()), g_.spacing, at, arc_);
+                }
+                curve_.clear();
+                for (const double sa : arc_) curve_.push_back(clothoidCurvePose(c, turn, sa));
+                if (curve_.empty()) continue;
+                curve_.back() = b;
+                if (!take()) return;
+            }
+            return;
+        }
+        for (const CarCurve &c : g_.reverse ? reedsSheppCurves(a, b, g_.radius, 2) : dubinsCurves(a, b, g_.radius, 2))
+        {
+            if (!(c.length < shorterThan)) break;
+            if (flicks(c)) continue;
+            // where each sample lies: its segment's start pose and the signed length into it
+            // (the arc lengths of detail::sampleArcs(), computed one segment at a time)
+            refs_.clear();
+            Pose2 at = a;
+            for (int seg = 0; seg < c.count; ++seg)
+            {
+                const CurveSegment &sg = c.segments[std::size_t(seg)];
+                const double l = std::abs(sg.length);
+                if (l <= 0) continue;
+                double zero = 0;
+                arc_.clear();
+                detail::appendArcs(l, sg.steer == Steer::Straight ? l : l * (1.0 + g_.reach / g_.radius), g_.spacing, zero, arc_);
+                for (const double d : arc_) refs_.push_back({at, {sg.steer, std::copysign(d, sg.length)}});
+                at = driveSegment(at, sg, g_.radius);
+            }
+            if (refs_.empty()) continue;
+            curve_.clear();
+            if (!take()) return;
+        }
+    }
+
+    /// A flick of the wheels from one lock to the other: an arc next to one of the other side
+    /// (within the curve) shorter than minFlick_.
+    bool flicks(const CarCurve &c) const
+    {
+        Steer last = Steer::Straight;
+        for (int seg = 0; seg < c.count; ++seg)
+        {
+            const CurveSegment &sg = c.segments[std::size_t(seg)];
+            const double l = std::abs(sg.length);
+            if (l <= 1e-9) continue;
+            Steer next = Steer::Straight;  // of the next piece of non-zero length
+            for (int t = seg + 1; t < c.count; ++t)
+                if (std::abs(c.segments[std::size_t(t)].length) > 1e-9)
+                {
+                    next = c.segments[std::size_t(t)].steer;
+                    break;
+                }
+            const auto opposite = [&sg](Steer o) { return o != Steer::Straight && o != sg.steer; };
+            if (sg.steer != Steer::Straight && l < minFlick_ && (opposite(last) || opposite(next))) return true;
+            last = sg.steer;
+        }
+        return false;
+    }
+
+    struct SampleRef
+    {
+        Pose2 from;
+        CurveSegment part;
+    };
+    Geometry g_;
+    const CarLatticeQuery &q_;
+    const LatticeCostModel &cost_;
+    const std::function<bool()> &cancelled_;
+    int maxCurves_;
+    ShortcutReport &rep_;
+    double minFlick_;
+    std::vector<double> arc_;
+    std::vector<Pose2> curve_, old_, joined_;
+    std::vector<SampleRef> refs_;
+};
+}  // namespace
+
+ShortcutReport CarLatticeSearch::shortcut(std::vector<Pose2> &path, const CarLatticeQuery &q, const LatticeCostModel &cost,
+                                          const std::function<bool()> &cancelled, int maxCurves) const
+{
+    ShortcutReport rep;
+    rep.lengthBefore = rep.lengthAfter = lengthOf(path);
+    int cusps = 0;
+    rep.costBefore = rep.costAfter = path.size() > 1 ? stretchCost(path, 0, 0, q, cost, cusps) : 0.0;
+    if (path.size() < 3) return rep;
+    const CarLatticeConfig &cfg = lattice_->config();
+    // the body grown by kClearance beyond the search's margin: a curve is taken where it
+    // leaves a follower room, not where it grazes an obstacle
+    const Shortcutter::Geometry geo{*col_, clothoid_.get(), cfg.turnRadius, cfg.spacing, col_->reach(),
+                                    lattice_->margin() + kClearance, cfg.reverse};
+    Shortcutter sc(geo, q, cost, cancelled, maxCurves, rep);
+    for (int pass = 0; pass < 2 && !sc.stopped(); ++pass)
+        if (!sc.pass(path)) break;
+    rep.lengthAfter = lengthOf(path);
+    rep.costAfter = stretchCost(path, 0, 0, q, cost, cusps);
+    return rep;
+}
+
+}  // namespace gridcar
