@@ -17,6 +17,10 @@ namespace
 /// Anchors (the poses a shortcut may start or end at) about this far apart along the path.
 constexpr double kAnchorStep = 0.3;
 constexpr double kMaxAnchors = 80;
+/// Free curves from one anchor that are no better (by cost or cusps) before the next anchor is
+/// tried: where the farthest free ones are costlier the path is already good there (an
+/// obstacle-distance cost in open space), and each such test costs a pass over the curve.
+constexpr int kRefusals = 4;
 /// Room (m) a shortcut leaves between the body and the map beyond the search's own margin.
 constexpr double kClearance = 0.05;
 /// An arc between arcs of the other side is at least min(this, a quarter circle) long (m).
@@ -141,13 +145,17 @@ public:
         {
             const std::size_t i = anchor[ia];
             std::size_t next = ia + 1;
-            for (std::size_t ja = anchor.size() - 1; ja >= ia + 2 && next == ia + 1 && !stopped(); --ja)
+            refused_ = 0;
+            for (std::size_t ja = anchor.size() - 1; ja >= ia + 2 && next == ia + 1 && refused_ < kRefusals && !stopped(); --ja)
             {
                 const std::size_t j = anchor[ja];
                 const double oldLength = s[j] - s[i];
-                if (std::hypot(path[j].x - path[i].x, path[j].y - path[i].y) >= oldLength - 1e-3) continue;  // no curve is shorter
-                old_.assign(path.begin() + std::ptrdiff_t(i), path.begin() + std::ptrdiff_t(j) + 1);
-                if (replace(old_, oldLength, arrive, j + 1 < n ? gear[j] : 0, out)) next = ja;
+                // no curve is shorter: none is shorter than the chord, nor than R x the heading
+                // change (only its arcs turn)
+                const double chord = std::hypot(path[j].x - path[i].x, path[j].y - path[i].y);
+                const double turn = g_.radius * std::abs(wrapAngle(path[j].yaw - path[i].yaw));
+                if (std::max(chord, turn) >= oldLength - 1e-3) continue;
+                if (replace(path, i, j, oldLength, arrive, j + 1 < n ? gear[j] : 0, out)) next = ja;
             }
             if (next == ia + 1)
                 out.insert(out.end(), path.begin() + std::ptrdiff_t(i) + 1, path.begin() + std::ptrdiff_t(anchor[ia + 1]) + 1);
@@ -171,23 +179,32 @@ public:
     }
 
 private:
-    /// The first candidate curve from old's first to its last pose that passes every test,
-    /// appended to @p out (its first pose left out); false if none does.
-    bool replace(const std::vector<Pose2> &old, double oldLength, int arrive, int leave, std::vector<Pose2> &out)
+    /// The first candidate curve from path[i] to path[j] that passes every test, appended to
+    /// @p out (its first pose left out); false if none does.
+    bool replace(const std::vector<Pose2> &path, std::size_t i, std::size_t j, double oldLength, int arrive, int leave,
+                 std::vector<Pose2> &out)
     {
-        const Pose2 &a = old.front(), &b = old.back();
+        const Pose2 &a = path[i], &b = path[j];
         double oldCost = -1;
         int oldCusps = 0;
         bool found = false;
         forCurves(a, b, oldLength - 1e-3, [&] {
             ++rep_.curves;
             if (!free(a, b)) return !stopped();
-            if (oldCost < 0) oldCost = stretchCost(old, arrive, leave, q_, cost_, oldCusps);
+            if (oldCost < 0)
+            {
+                old_.assign(path.begin() + std::ptrdiff_t(i), path.begin() + std::ptrdiff_t(j) + 1);
+                oldCost = stretchCost(old_, arrive, leave, q_, cost_, oldCusps);
+            }
             joined_.assign(1, a);
             joined_.insert(joined_.end(), curve_.begin(), curve_.end());
             int newCusps = 0;
             const double newCost = stretchCost(joined_, arrive, leave, q_, cost_, newCusps);
-            if (newCusps > oldCusps || !(newCost < oldCost - 1e-9)) return !stopped();
+            if (newCusps > oldCusps || !(newCost < oldCost - 1e-9))
+            {
+                ++refused_;  // free but no better
+                return !stopped();
+            }
             out.insert(out.end(), curve_.begin(), curve_.end());
             found = true;
             return false;
@@ -307,6 +324,7 @@ private:
     int maxCurves_;
     ShortcutReport &rep_;
     double minFlick_;
+    int refused_{0};  ///< free curves from the current anchor that were no better
     std::vector<double> arc_;
     std::vector<Pose2> curve_, old_, joined_;
     std::vector<SampleRef> refs_;
