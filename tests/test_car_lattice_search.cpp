@@ -310,7 +310,7 @@ TEST(CarLatticeSearch, ShortcutShortensAParallelParkThatIsStillDriven)
         auto p = makePlanner(s.ss->getSpaceInformation(), "corner-astar");
         p->params().setParam("reverse", "on");
         if (!shortcut) p->params().setParam("shortcut", "0");
-        EXPECT_EQ(p->params().getParam("shortcut")->getValue(), shortcut ? "1" : "0");
+        EXPECT_EQ(p->params().getParam("shortcut")->getValue(), shortcut ? "auto" : "off");
         (shortcut ? on : off) = runQuery(s, p, q.start, q.goal, 5.0);
     }
     ASSERT_EQ(off.status, ob::PlannerStatus::EXACT_SOLUTION);
@@ -323,4 +323,27 @@ TEST(CarLatticeSearch, ShortcutShortensAParallelParkThatIsStillDriven)
     EXPECT_NEAR(wrapAngle(on.path.back().yaw - q.goal.yaw), 0.0, 1e-6);
     const DriveResult d = drivePath(on.path, *s.checker, Scenario());
     EXPECT_EQ(d.outcome, DriveResult::Outcome::Reached) << d.reason;
+}
+
+// `shortcut` = auto shortcuts on a reversing lattice only (a forward route keeps the searched
+// path: docs/planners.md says why); on and off (1, 0) force it; anything else is refused.
+TEST(CarLatticeSearch, ShortcutParameterModes)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    auto grid = std::make_shared<const OccupancyGrid>(generateCampus());
+    GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
+    auto planner = std::dynamic_pointer_cast<GridPlanner>(makePlanner(s.ss->getSpaceInformation(), "corner-astar"));
+    ASSERT_TRUE(planner);
+    EXPECT_EQ(planner->shortcut(), "auto");
+    EXPECT_FALSE(planner->shortcutting());
+    planner->setReverse("on");
+    EXPECT_TRUE(planner->shortcutting());
+    planner->setShortcut("0");
+    EXPECT_EQ(planner->shortcut(), "off");
+    EXPECT_FALSE(planner->shortcutting());
+    planner->setReverse("off");
+    planner->setShortcut("1");
+    EXPECT_TRUE(planner->shortcutting());
+    EXPECT_THROW(planner->setShortcut("yes"), std::invalid_argument);
+    EXPECT_EQ(planner->shortcut(), "on");
 }

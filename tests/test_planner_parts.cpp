@@ -103,7 +103,7 @@ TEST(PlannerParts, LengthOnlyCarLatticeFromParts)
     test::setPlainQuery(*s.ss, 10, 30, 50, 30);
     auto parts = std::make_shared<LengthLattice>(s.ss->getSpaceInformation());
     parts->setContinuousCurvature(false);
-    parts->setShortcut(false);
+    parts->setShortcut("off");
     s.ss->setPlanner(parts);
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
     const std::vector<Pose2> path = toPoses(s.ss->getSolutionPath());
@@ -122,7 +122,7 @@ TEST(PlannerParts, LengthOnlyCarLatticeFromParts)
     corner->setWeight45(0);
     corner->setWeight90(0);
     corner->setWeight135(0);
-    corner->setShortcut(false);
+    corner->setShortcut("off");
     s.ss->setPlanner(corner);
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_DOUBLE_EQ(corner->lastCost(), partsCost);

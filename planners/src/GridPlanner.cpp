@@ -151,7 +151,7 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
                                  cuspPenalty() * cost->costPerMetreOfPenalty(),
                                  params_.curveHeuristic ? 30.0 * carSearch()->lattice().config().turnRadius : 0.0,
                                  curvatureRate(), 1.0 / turningRadius()};
-        options.shortcutCurves = params_.shortcut ? kShortcutCurves : 0;
+        options.shortcutCurves = shortcutting() ? kShortcutCurves : 0;
         if (params_.costLayerWeight > 0)
         {
             if (checker_ && checker_->grid().hasCosts())

@@ -32,12 +32,15 @@ void GridPlanner::declareCarLatticeParams()
     declareParam<double>("cost_layer_weight", this, &GridPlanner::setCostLayerWeight, &GridPlanner::costLayerWeight,
                          "0.:0.5:100.");
     declareParam<std::string>("turns", this, &GridPlanner::setTurns, &GridPlanner::turns, "arc,clothoid");
-    declareParam<bool>("shortcut", this, &GridPlanner::setShortcut, &GridPlanner::shortcut, "0,1");
+    declareParam<std::string>("shortcut", this, &GridPlanner::setShortcut, &GridPlanner::shortcut, "auto,on,off");
 }
 
-void GridPlanner::setShortcut(bool on)
+void GridPlanner::setShortcut(const std::string &mode)
 {
-    params_.shortcut = on;
+    const std::string m = mode == "1" ? "on" : mode == "0" ? "off" : mode;
+    if (m != "auto" && m != "on" && m != "off")
+        throw std::invalid_argument(getName() + ": shortcut must be auto, on or off, got '" + printable(mode) + "'");
+    params_.shortcut = m;
     parameterSet("shortcut");
 }
 

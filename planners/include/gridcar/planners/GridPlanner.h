@@ -51,8 +51,9 @@ struct GridPlannerParams
     /// turns within the curvature rate: the searched path's curvature is continuous)
     std::string turns{"arc"};
     /// `shortcut` (car lattice): a found path shortened by the analytic expansion's curves
-    /// where they are free, shorter and cheaper (CarLatticeSearch::shortcut())
-    bool shortcut{true};
+    /// where they are free, shorter and cheaper (CarLatticeSearch::shortcut()): auto (on when
+    /// the lattice reverses), on, off
+    std::string shortcut{"auto"};
 };
 
 /**
@@ -177,9 +178,13 @@ public:
     bool continuousCurvature() const { return params_.continuousCurvature; }
     void setContinuousCurvature(bool on);
     /// `shortcut`: a found path's stretches replaced by free, shorter and cheaper curves of the
-    /// analytic expansion (CarLatticeSearch::shortcut()); on by default.
-    bool shortcut() const { return params_.shortcut; }
-    void setShortcut(bool on);
+    /// analytic expansion (CarLatticeSearch::shortcut()): `auto` (default: on when the lattice
+    /// reverses, a manoeuvre; off on a forward route, see docs/planners.md), `on`, `off` (also
+    /// 1 and 0); std::invalid_argument otherwise.
+    std::string shortcut() const { return params_.shortcut; }
+    void setShortcut(const std::string &mode);
+    /// True if a found path is shortcut as configured (`shortcut`, `reverse`).
+    bool shortcutting() const { return params_.shortcut == "on" || (params_.shortcut == "auto" && reversing()); }
     /// The `curvature_rate` parameter as set (0: the vehicle's, curvatureRateLimit()).
     double curvatureRateParam() const { return params_.curvatureRate; }
     void setCurvatureRate(double rate);
