@@ -100,3 +100,23 @@ TEST(Drivability, APointVehicleHasNoCurvatureLimit)
     EXPECT_TRUE(checkDrivable({{50, 30, 0}, {60, 30, 0}, {60, 38, M_PI / 2}}, *w.checker).drivable);
     EXPECT_FALSE(checkDrivable({{30, 10, 0}, {50, 10, 0}}, *w.checker).drivable);
 }
+
+// A pose repeated to within a micron (a curve's end sampled twice, rounding apart) is the same
+// pose: it makes no curvature, no curvature rate and no kink (before, a 1e-7 m step's heading,
+// at right angles to the path, counted as a turn of 90 degrees over 1e-7 m).
+TEST(Drivability, APoseRepeatedWithinAMicronIsOnePose)
+{
+    const World w = world("paper-i");
+    std::vector<Pose2> path;
+    for (int i = 0; i <= 100; ++i)
+    {
+        path.push_back({10 + 0.1 * i, 30, 0});
+        if (i == 50) path.push_back({10 + 0.1 * i, 30 + 1e-7, 0});
+    }
+    DrivabilityOptions o;
+    o.maxCurvatureRate = 0.5;
+    const Drivability d = checkDrivable(path, *w.checker, o);
+    EXPECT_TRUE(d.drivable) << d.reason;
+    EXPECT_LT(d.maxCurvature, 1e-6);
+    EXPECT_LT(d.maxCurvatureRate, 1e-6);
+}

@@ -87,7 +87,7 @@ CurvatureProfile curvatureRateProfile(const std::vector<Pose2> &piece, double s0
     CurvatureProfile prof;
     std::vector<Pose2> pts;
     for (const Pose2 &p : piece)
-        if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+        if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
     if (pts.size() < 3) return prof;
     std::vector<double> len(pts.size() - 1);
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) len[i] = std::hypot(pts[i + 1].x - pts[i].x, pts[i + 1].y - pts[i].y);
@@ -127,7 +127,7 @@ Piece makePiece(const std::vector<Pose2> &poses, bool backward, double sigma)
 {
     Piece p;
     for (const Pose2 &q : poses)
-        if (p.pts.empty() || std::hypot(q.x - p.pts.back().x, q.y - p.pts.back().y) > 1e-9)
+        if (p.pts.empty() || !samePosition(q, p.pts.back()))
             p.pts.push_back({q.x, q.y, wrapAngle(q.yaw + (backward ? M_PI : 0.0))});
     const std::size_t n = p.pts.size();
     p.s.assign(n, 0.0);

@@ -8,7 +8,7 @@ std::vector<PathPiece> splitAtCusps(const std::vector<Pose2> &path)
 {
     std::vector<Pose2> pts;
     for (const Pose2 &p : path)
-        if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+        if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
     std::vector<PathPiece> out;
     if (pts.empty()) return out;
     out.push_back({{pts[0]}, false});

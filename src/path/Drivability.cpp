@@ -66,7 +66,7 @@ Drivability checkDrivable(const std::vector<Pose2> &path, const FootprintChecker
     Drivability d;
     std::vector<Pose2> pts;
     for (const Pose2 &p : path)
-        if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+        if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
     if (pts.empty())
     {
         d.reason = "empty path";

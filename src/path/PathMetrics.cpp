@@ -25,7 +25,7 @@ PathMetrics pieceMetrics(const std::vector<Pose2> &path, const FootprintChecker 
     // distinct points
     std::vector<Pose2> pts;
     for (const Pose2 &p : path)
-        if (pts.empty() || dist(p, pts.back()) > 1e-9) pts.push_back(p);
+        if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
     for (std::size_t i = 1; i < pts.size(); ++i) m.length += dist(pts[i - 1], pts[i]);
     m.maxCurvature = maxMengerCurvature(pts);
 

@@ -39,7 +39,7 @@ std::vector<Pose2> turningPoints(const std::vector<Pose2> &path)
 {
     std::vector<Pose2> pts;
     for (const Pose2 &p : path)
-        if (pts.empty() || dist(p, pts.back()) > 1e-9) pts.push_back(p);
+        if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
     if (pts.size() <= 2) return pts;
     std::vector<Pose2> out{pts.front()};
     for (std::size_t i = 1; i + 1 < pts.size(); ++i)
@@ -89,7 +89,7 @@ double maxMengerCurvature(const std::vector<Pose2> &path)
 {
     std::vector<Pose2> pts;
     for (const Pose2 &p : path)
-        if (pts.empty() || dist(p, pts.back()) > 1e-9) pts.push_back(p);
+        if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
     double best = 0.0;
     for (std::size_t i = 1; i + 1 < pts.size(); ++i)
     {

@@ -95,7 +95,7 @@ std::vector<std::vector<Pose2>> cutAtSteeringJumps(const std::vector<Pose2> &pos
     const VehicleParams &veh = checker.vehicle();
     std::vector<Pose2> pts;
     for (const Pose2 &p : poses)
-        if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+        if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
     if (pts.size() < 4) return {poses};
     std::vector<double> cum{0.0}, heading;
     for (std::size_t i = 1; i < pts.size(); ++i)

@@ -34,7 +34,7 @@ struct TrackedPath
     TrackedPath(const std::vector<Pose2> &path, const FootprintChecker &checker)
     {
         for (const Pose2 &p : path)
-            if (pts.empty() || std::hypot(p.x - pts.back().x, p.y - pts.back().y) > 1e-9) pts.push_back(p);
+            if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
         if (pts.size() < 2) return;
         cum.push_back(0.0);
         for (std::size_t i = 1; i < pts.size(); ++i)

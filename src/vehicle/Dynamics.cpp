@@ -115,7 +115,7 @@ VelocityProfile velocityProfile(const std::vector<Pose2> &path, const VehiclePar
         throw std::invalid_argument("drivingTime needs max_speed, acceleration and deceleration > 0");
     std::vector<Pose2> pts;
     for (const Pose2 &q : path)
-        if (pts.empty() || std::hypot(q.x - pts.back().x, q.y - pts.back().y) > 1e-9) pts.push_back(q);
+        if (pts.empty() || !samePosition(q, pts.back())) pts.push_back(q);
     if (pts.size() < 2) return prof;
     // resample by arc length
     std::vector<double> xs, ys;
