@@ -126,7 +126,9 @@ TEST_P(Conformance, TimeLimitIsHonoured)
     const ob::PlannerStatus st = s.ss->solve(limit);
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("%s: solve(%.2f) returned after %.3f s (%s)\n", GetParam().c_str(), limit, took, st.asString().c_str());
-    EXPECT_LT(took, limit + 0.1) << GetParam() << " status " << st.asString();
+    // 0.3 s of slack: on a loaded 2-core machine OMPL's LazyPRM* once returned 0.15 s late (it
+    // returns at 0.052 s alone); a planner that ignored the limit would search the campus on
+    EXPECT_LT(took, limit + 0.3) << GetParam() << " status " << st.asString();
     EXPECT_NE(st, ob::PlannerStatus::EXACT_SOLUTION) << "the search should not finish in 50 ms";
 }
 

@@ -17,34 +17,55 @@ void Follower::safeCommand(const VehicleState &st, double t, double steerCmd, do
     // does: rolled on at a constant speed it would run past the end of a piece that stops
     // short of a wall, and refuse every command on the last few decimetres into a tight slot
     const double remaining = std::max(path_.total - sProj_, 0.0);
-    for (const auto &cand : candidates)
-    {
-        const double steer = cand[0] * (cand[2] > 0 ? steerTrack : steerCmd);
+    // steps of dt for which holding @p steer at speed command @p v keeps the body free (and
+    // clear of the moving obstacles), at most @p steps
+    const auto freeSteps = [&](double steer, double v, int steps) {
         VehicleState r = st;
-        bool ok = true;
         double travelled = 0.0;
-        for (int k = 1; k <= horizon && ok; ++k)
+        for (int k = 1; k <= steps; ++k)
         {
             const double vStop = std::sqrt(2.0 * veh_.deceleration * std::max(remaining - travelled, 0.0));
             const VehicleState before = r;
-            r = stepBicycle(r, veh_, steer, std::min(cand[1] * vCmd, vStop), prm_.dt);
+            r = stepBicycle(r, veh_, steer, std::min(v, vStop), prm_.dt);
             travelled += std::hypot(r.x - before.x, r.y - before.y);
             // every step: the body can swing into a corner between two checks further apart
-            ok = checker_.isValid(r.x, r.y, r.yaw);
+            if (!checker_.isValid(r.x, r.y, r.yaw)) return k - 1;
             for (const MovingObstacle &m : scenario_.obstacles)
             {
-                if (!ok) break;
                 double mx, my;
                 m.positionAt(t + k * prm_.dt, mx, my);
-                ok = m.distanceFrom(r.x + veh_.centreOffset() * std::cos(r.yaw), r.y + veh_.centreOffset() * std::sin(r.yaw),
-                                    t + k * prm_.dt) > veh_.circumscribedRadius();
+                if (!(m.distanceFrom(r.x + veh_.centreOffset() * std::cos(r.yaw), r.y + veh_.centreOffset() * std::sin(r.yaw),
+                                     t + k * prm_.dt) > veh_.circumscribedRadius()))
+                    return k - 1;
             }
         }
-        if (ok)
+        return steps;
+    };
+    for (const auto &cand : candidates)
+    {
+        const double steer = cand[0] * (cand[2] > 0 ? steerTrack : steerCmd);
+        if (freeSteps(steer, cand[1] * vCmd, horizon) == horizon)
         {
             steerUse = steer;
             vUse = cand[1] * vCmd;
             return;
+        }
+    }
+    // Nothing keeps the body free for the horizon: brake, with the command's steering if the
+    // braking stays free with it, else with the steering (the path's own, straight, half and
+    // full lock either way) whose braking stays free the longest: braking with the refused
+    // command swung a fast car's body into what the rollout saw (a pinch point taken 3 degrees
+    // behind the path's heading at 5.5 m/s).
+    if (st.v > 1e-3)
+    {
+        const double phi = veh_.maxSteerDeg * M_PI / 180.0;
+        const int stop = std::max(2, int(std::ceil((st.v / std::max(veh_.deceleration, 1e-3) + 0.3) / prm_.dt)));
+        int best = -1;
+        for (const double steer : {steerCmd, steerTrack, 0.0, 0.5 * phi, -0.5 * phi, phi, -phi})
+        {
+            const int k = freeSteps(steer, 0.0, stop);
+            if (k > best) best = k, steerUse = steer;
+            if (k == stop) break;
         }
     }
     if (vCmd > 0)

@@ -268,7 +268,9 @@ public:
 
     /// Safety filter: a car's body swings when it steers (the rear overhang moves the other
     /// way), so the commands are rolled out for a short horizon and softened until the rollout
-    /// stays free; if nothing does, the vehicle stops (and may end as stuck).
+    /// stays free; if nothing does, the vehicle brakes (and may end as stuck), with the
+    /// command's steering if that braking stays free to the stop, else at speed with the
+    /// steering whose braking stays free the longest.
     /// @p steerTrack: the steering that follows the path alone (feed-forward and the path's
     /// heading and cross-track errors, no potential field), tried right after the command
     /// itself: where the path passes an obstacle closely, softening a command the field has bent
