@@ -194,7 +194,8 @@ public:
     /**
      * @brief Shortens a found path (dense world poses, start first, ending where it must end)
      * by the curves of the analytic expansion: between poses about 0.3 m apart along it (and
-     * its cusps; farther apart on a long path, at most about 80 of them), from each one the
+     * its cusps; farther apart on a long path, at most about 80 of them on a reversing
+     * lattice, 40 on a forward one, whose shortcuts span at most 12 R), from each one the
      * farthest later one that a curve of the lattice's family (Reeds-Shepp when it reverses,
      * its clothoid turn-straight-turn curves with clothoid turns, else Dubins; the two
      * shortest words) joins is reached by that curve, if the curve
@@ -211,7 +212,8 @@ public:
      * and never gains a cusp: what a lattice's few headings and coarse cells leave over (a
      * parking manoeuvre some metres longer than a continuous planner's) is taken off. Up to
      * @p maxCurves curves are checked; @p cancelled is polled between them (the path is then
-     * kept as far as it got: still valid). Two passes at most.
+     * kept as far as it got: still valid); after 4 free curves from one anchor that are no
+     * better, the next anchor. Two passes at most.
      */
     ShortcutReport shortcut(std::vector<Pose2> &path, const CarLatticeQuery &q, const LatticeCostModel &cost,
                             const std::function<bool()> &cancelled, int maxCurves) const;
