@@ -1,5 +1,6 @@
 #pragma once
 // Maps and set-ups the planner tests share.
+#include "gridcar/core/Angles.h"
 #include "gridcar/map/ParkingScenes.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/Setup.h"
@@ -8,6 +9,8 @@
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/geometric/SimpleSetup.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -49,6 +52,13 @@ inline GridSetup parkingSetup(const std::string &vehicle, const std::string &sce
                     return makeGridSetup(std::make_shared<const OccupancyGrid>(s.grid), v);
                 }
     throw std::logic_error("no parking query " + name);
+}
+
+/// How far pose @p a is from @p b: the largest of |dx|, |dy| (m) and the wrapped yaw difference
+/// (rad), for "the path ends at the goal pose" checks.
+inline double poseError(const Pose2 &a, const Pose2 &b)
+{
+    return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(wrapAngle(a.yaw - b.yaw))});
 }
 
 inline GridSetup testSetup(const std::string &vehicle = "point")

@@ -2,6 +2,7 @@
 // search, drivable paths of every car-lattice planner, free start and goal heading, PositionGoal.
 #include "PlannerTestUtil.h"
 
+#include "gridcar/path/PathMetrics.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/path/Cusps.h"
@@ -198,16 +199,6 @@ TEST(CarLatticeSearch, PositionGoalWithAndWithoutHeadingTolerance)
     EXPECT_THROW(PositionGoal(si, 0, 0, -1), std::invalid_argument);
 }
 
-namespace
-{
-double pathLength(const std::vector<Pose2> &p)
-{
-    double l = 0;
-    for (std::size_t k = 1; k < p.size(); ++k) l += std::hypot(p[k].x - p[k - 1].x, p[k].y - p[k - 1].y);
-    return l;
-}
-}  // namespace
-
 // CarLatticeSearch::shortcut() on searched paths, forwards only and reversing, on seeded random
 // maps: the ends stay to the last bit, the path never gets longer or costlier or gains a cusp,
 // and it stays drivable by the independent check (exact FCL every 2 cm, K_max, split at cusps);
@@ -318,9 +309,7 @@ TEST(CarLatticeSearch, ShortcutShortensAParallelParkThatIsStillDriven)
     EXPECT_TRUE(on.drivability.drivable) << on.drivability.reason;
     EXPECT_LT(on.metrics.length, 0.97 * off.metrics.length);
     EXPECT_LE(on.metrics.cusps, off.metrics.cusps);
-    EXPECT_NEAR(on.path.back().x, q.goal.x, 1e-6);
-    EXPECT_NEAR(on.path.back().y, q.goal.y, 1e-6);
-    EXPECT_NEAR(wrapAngle(on.path.back().yaw - q.goal.yaw), 0.0, 1e-6);
+    EXPECT_LT(test::poseError(on.path.back(), q.goal), 1e-6);
     const DriveResult d = drivePath(on.path, *s.checker, Scenario());
     EXPECT_EQ(d.outcome, DriveResult::Outcome::Reached) << d.reason;
 }

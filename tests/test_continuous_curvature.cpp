@@ -2,6 +2,7 @@
 // bang-bang paths, the drivable check's curvature rate, and the car-lattice planners' paths.
 #include "PlannerTestUtil.h"
 
+#include "gridcar/path/PathMetrics.h"
 #include "gridcar/bench/PlanQuery.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/path/ContinuousCurvature.h"
@@ -48,13 +49,6 @@ std::vector<Pose2> straightArcStraight(double a, double r, double turn, double b
     go(std::abs(turn) * r, turn > 0 ? 1.0 / r : -1.0 / r);
     go(b, 0.0);
     return out;
-}
-
-double lengthOf(const std::vector<Pose2> &p)
-{
-    double l = 0;
-    for (std::size_t i = 1; i < p.size(); ++i) l += std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
-    return l;
 }
 
 CurvatureSmoothingOptions options(double kmax, double sigma)
@@ -136,7 +130,7 @@ TEST(ContinuousCurvature, BangBangTurnBecomesContinuousWithinTheRate)
         EXPECT_DOUBLE_EQ(r.path.back().x, in.back().x);
         EXPECT_DOUBLE_EQ(r.path.back().y, in.back().y);
         EXPECT_DOUBLE_EQ(r.path.back().yaw, in.back().yaw);
-        EXPECT_LE(lengthOf(r.path), lengthOf(in) * 1.01);
+        EXPECT_LE(pathLength(r.path), pathLength(in) * 1.01);
         // consecutive poses close together and yaws along the motion
         for (std::size_t i = 1; i < r.path.size(); ++i)
         {
@@ -157,7 +151,7 @@ TEST(ContinuousCurvature, LargeTurnIsNoWorseThanItsInput)
     const CurvatureSmoothing r = smoothCurvature(in, options(kmax, sigma));
     EXPECT_LE(r.maxRate, curvatureRateProfile(in).maxRate * 1.0001);
     EXPECT_LE(curvatureRateProfile(r.path).maxCurvature, kmax * 1.001);
-    EXPECT_LE(lengthOf(r.path), lengthOf(in) * 1.01);
+    EXPECT_LE(pathLength(r.path), pathLength(in) * 1.01);
     EXPECT_DOUBLE_EQ(r.path.back().x, in.back().x);
     EXPECT_DOUBLE_EQ(r.path.back().yaw, in.back().yaw);
 }

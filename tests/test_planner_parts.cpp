@@ -3,6 +3,7 @@
 // analytic expansion, as configuration alone.
 #include "PlannerTestUtil.h"
 
+#include "gridcar/path/PathMetrics.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/planners/CornerAStar.h"
 #include "gridcar/planners/GridPlanner.h"
@@ -86,12 +87,6 @@ protected:
     std::unique_ptr<GridNodes> makeGridNodes() override { return std::make_unique<FourConnected>(); }
 };
 
-double pathLength(const std::vector<Pose2> &p)
-{
-    double s = 0;
-    for (std::size_t i = 1; i < p.size(); ++i) s += std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
-    return s;
-}
 }  // namespace
 
 // The length-only car lattice from parts finds a drivable path whose cost is its length, and

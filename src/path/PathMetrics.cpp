@@ -26,7 +26,7 @@ PathMetrics pieceMetrics(const std::vector<Pose2> &path, const FootprintChecker 
     std::vector<Pose2> pts;
     for (const Pose2 &p : path)
         if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
-    for (std::size_t i = 1; i < pts.size(); ++i) m.length += dist(pts[i - 1], pts[i]);
+    m.length = pathLength(pts);
     m.maxCurvature = maxMengerCurvature(pts);
 
     // turning points and the largest heading change at one of them
@@ -129,6 +129,13 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
     if (!checker) m.minClearance = m.minPathDistance = 0.0;
     m.cusps = int(pieces.size()) - 1;
     return m;
+}
+
+double pathLength(const std::vector<Pose2> &path)
+{
+    double l = 0.0;
+    for (std::size_t i = 1; i < path.size(); ++i) l += dist(path[i - 1], path[i]);
+    return l;
 }
 
 }  // namespace gridcar

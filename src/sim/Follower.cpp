@@ -32,8 +32,6 @@ void Follower::safeCommand(const VehicleState &st, double t, double steerCmd, do
             if (!checker_.isValid(r.x, r.y, r.yaw)) return k - 1;
             for (const MovingObstacle &m : scenario_.obstacles)
             {
-                double mx, my;
-                m.positionAt(t + k * prm_.dt, mx, my);
                 if (!(m.distanceFrom(r.x + veh_.centreOffset() * std::cos(r.yaw), r.y + veh_.centreOffset() * std::sin(r.yaw),
                                      t + k * prm_.dt) > veh_.circumscribedRadius()))
                     return k - 1;

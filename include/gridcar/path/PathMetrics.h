@@ -59,4 +59,7 @@ struct PathMetrics
 PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintChecker *checker,
                                const TurnParams &turnParams = TurnParams(), bool reversing = false);
 
+/// Length (m) of the polyline through @p path's positions (0 for fewer than two poses).
+double pathLength(const std::vector<Pose2> &path);
+
 }  // namespace gridcar

@@ -5,6 +5,7 @@
 #include "gridcar/core/Angles.h"
 #include "gridcar/curves/CarCurves.h"
 #include "gridcar/curves/ClothoidTurns.h"
+#include "gridcar/path/PathMetrics.h"
 #include "gridcar/planners/search/detail/CurveSampling.h"
 
 #include <algorithm>
@@ -34,11 +35,11 @@ constexpr double kClearance = 0.05;
 constexpr double kMaxFlick = 2.0;
 
 /// The gear of the step from @p a to @p b: 1 forwards, -1 backwards (the displacement against
-/// the mean heading of both poses), 0 for a repeated pose.
+/// the mean heading of both poses), 0 for a repeated pose (samePosition()).
 int stepGear(const Pose2 &a, const Pose2 &b)
 {
+    if (samePosition(a, b)) return 0;
     const double dx = b.x - a.x, dy = b.y - a.y;
-    if (std::hypot(dx, dy) < 1e-9) return 0;
     const double along = dx * (std::cos(a.yaw) + std::cos(b.yaw)) + dy * (std::sin(a.yaw) + std::sin(b.yaw));
     return along < 0 ? -1 : 1;
 }
@@ -91,13 +92,6 @@ double stretchCost(const std::vector<Pose2> &poses, int before, int after, const
     close(poses.size() - 1);
     if (after != 0 && gear != 0 && after != gear) ++cusps;
     return total + cusps * q.cuspPenalty;
-}
-
-double lengthOf(const std::vector<Pose2> &p)
-{
-    double l = 0;
-    for (std::size_t k = 1; k < p.size(); ++k) l += std::hypot(p[k].x - p[k - 1].x, p[k].y - p[k - 1].y);
-    return l;
 }
 
 /// One shortcut run over a path (CarLatticeSearch::shortcut()): the candidate curves between
@@ -347,7 +341,7 @@ ShortcutReport CarLatticeSearch::shortcut(std::vector<Pose2> &path, const CarLat
                                           const std::function<bool()> &cancelled, int maxCurves) const
 {
     ShortcutReport rep;
-    rep.lengthBefore = rep.lengthAfter = lengthOf(path);
+    rep.lengthBefore = rep.lengthAfter = pathLength(path);
     int cusps = 0;
     rep.costBefore = rep.costAfter = path.size() > 1 ? stretchCost(path, 0, 0, q, cost, cusps) : 0.0;
     if (path.size() < 3) return rep;
@@ -359,7 +353,7 @@ ShortcutReport CarLatticeSearch::shortcut(std::vector<Pose2> &path, const CarLat
     Shortcutter sc(geo, q, cost, cancelled, maxCurves, rep);
     for (int pass = 0; pass < 2 && !sc.stopped(); ++pass)
         if (!sc.pass(path)) break;
-    rep.lengthAfter = lengthOf(path);
+    rep.lengthAfter = pathLength(path);
     rep.costAfter = stretchCost(path, 0, 0, q, cost, cusps);
     return rep;
 }
