@@ -258,6 +258,51 @@ TEST(CarLatticeSearch, ShortcutKeepsEndsAndGuaranteesAndShortens)
     EXPECT_GE(shortened, paths / 4) << "of " << paths;
 }
 
+// With clothoid turns (a curvature rate) the shortcut keeps the rate: its curves start and end
+// at curvature 0 and join the path only where it runs straight, so the independent check with
+// the rate passes after it as before it; it still shortens paths, also with wider turns.
+TEST(CarLatticeSearch, ShortcutWithClothoidTurnsKeepsTheCurvatureRate)
+{
+    int shortened = 0, paths = 0;
+    for (unsigned seed = 1; seed <= 4; ++seed)
+    {
+        auto g = randomBlocks(seed);
+        auto field = std::make_shared<DistanceField>(*g);
+        FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
+        CarLatticeConfig cfg{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()};
+        cfg.curvatureRate = fc.vehicle().curvatureRateLimit();
+        CarLatticeSearch search(fc, std::make_shared<const CarLattice>(cfg));
+        std::mt19937 rng(seed * 31);
+        for (int k = 0; k < 16; ++k)
+        {
+            CarLatticeQuery q;
+            q.start = randomFree(fc, rng);
+            q.goal = randomFree(fc, rng);
+            q.goalYawTolerance = 0;
+            LengthCost cost;
+            const CarLatticeResult r = search.run(q, cost, [] { return false; });
+            if (!r.exact) continue;
+            SCOPED_TRACE("seed " + std::to_string(seed) + " query " + std::to_string(k));
+            DrivabilityOptions o;
+            o.maxCurvatureRate = cfg.curvatureRate;
+            const Drivability before = checkDrivable(r.path, fc, o);
+            if (!before.drivable) continue;  // the rate is the shortcut's to keep, not to mend
+            ++paths;
+            std::vector<Pose2> p = r.path;
+            const ShortcutReport rep = search.shortcut(p, q, cost, [] { return false; }, 3000);
+            const Drivability after = checkDrivable(p, fc, o);
+            EXPECT_TRUE(after.drivable) << after.reason;
+            EXPECT_LE(after.maxCurvatureRate, 1.02 * cfg.curvatureRate);
+            EXPECT_LE(rep.lengthAfter, rep.lengthBefore + 1e-9);
+            EXPECT_EQ(p.back().x, r.path.back().x);
+            EXPECT_EQ(p.back().yaw, r.path.back().yaw);
+            if (rep.lengthAfter < rep.lengthBefore - 0.05) ++shortened;
+        }
+    }
+    EXPECT_GE(paths, 10);
+    EXPECT_GE(shortened, paths / 4) << "of " << paths;
+}
+
 // Stopped at once, the shortcut leaves the path as it was.
 TEST(CarLatticeSearch, ShortcutStoppedAtOnceKeepsThePath)
 {

@@ -5,12 +5,14 @@
 #include "gridcar/core/Angles.h"
 #include "gridcar/curves/CarCurves.h"
 #include "gridcar/curves/ClothoidTurns.h"
+#include "gridcar/path/ContinuousCurvature.h"
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/planners/search/detail/CurveSampling.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace gridcar
 {
@@ -31,6 +33,8 @@ constexpr double kRouteSpan = 12;  // turning radii
 constexpr int kRefusals = 4;
 /// Room (m) a shortcut leaves between the body and the map beyond the search's own margin.
 constexpr double kClearance = 0.05;
+/// With clothoid turns the shortcut tries turns of these multiples of R_min too.
+constexpr double kWideTurns[] = {2.0, 4.0};
 /// An arc between arcs of the other side is at least min(this, a quarter circle) long (m).
 constexpr double kMaxFlick = 2.0;
 
@@ -111,6 +115,13 @@ public:
       : g_(g), q_(q), cost_(cost), cancelled_(cancelled), maxCurves_(maxCurves), rep_(rep),
         minFlick_(std::min(kMaxFlick, M_PI / 2 * g.radius))
     {
+        if (!g_.clothoid) return;
+        turns_.push_back(g_.clothoid);
+        for (const double k : kWideTurns)
+        {
+            wide_.push_back(std::make_unique<ClothoidTurn>(k * g_.clothoid->radius(), g_.clothoid->sigma()));
+            turns_.push_back(wide_.back().get());
+        }
     }
 
     bool stopped() const { return rep_.curves >= maxCurves_ || (cancelled_ && cancelled_()); }
@@ -128,12 +139,15 @@ public:
             if (gear[k] == 0 && k > 0) gear[k] = gear[k - 1];
         }
         // anchors: every kAnchorStep (at most about maxAnchors_ of them on a long path: the
-        // pairs tried grow as their square), every cusp, both ends
+        // pairs tried grow as their square), every cusp, both ends; with clothoid turns only
+        // where the path runs straight (a curve starts and ends at curvature 0: joined
+        // mid-turn the curvature would jump there, beyond the rate the turns keep)
         const double step = std::max(kAnchorStep, s[n - 1] / maxAnchors_);
         std::vector<std::size_t> anchor{0};
         for (std::size_t k = 1; k + 1 < n; ++k)
         {
             const bool cusp = gear[k] != 0 && gear[k - 1] != 0 && gear[k] != gear[k - 1];
+            if (!cusp && g_.clothoid && !(straightStep(path, k - 1) && straightStep(path, k))) continue;
             if (cusp || s[k] - s[anchor.back()] >= step) anchor.push_back(k);
         }
         anchor.push_back(n - 1);
@@ -181,6 +195,31 @@ public:
     }
 
 private:
+    /// With clothoid turns: the step from path[k] to path[k + 1] turns by at most twice what a
+    /// clothoid turns in its first step from curvature 0 (sigma ds^2 / 2), so a curve that
+    /// starts or ends at curvature 0 joins it within the rate.
+    bool straightStep(const std::vector<Pose2> &path, std::size_t k) const
+    {
+        const double ds = std::hypot(path[k + 1].x - path[k].x, path[k + 1].y - path[k].y);
+        return std::abs(wrapAngle(path[k + 1].yaw - path[k].yaw)) <= g_.clothoid->sigma() * ds * ds + 1e-9;
+    }
+
+    /// With clothoid turns: the curvature rate (curvatureRateProfile(), as the independent
+    /// check measures it) stays within sigma where the candidate curve_ joins the path: the
+    /// last poses of @p out before it, and path[j] onwards after it.
+    bool joinsWithinRate(const std::vector<Pose2> &out, const std::vector<Pose2> &path, std::size_t j)
+    {
+        constexpr std::size_t kAround = 3;
+        const double sigma = g_.clothoid->sigma();
+        window_.assign(out.end() - std::ptrdiff_t(std::min(out.size(), kAround)), out.end());
+        window_.insert(window_.end(), curve_.begin(), curve_.begin() + std::ptrdiff_t(std::min(curve_.size(), kAround)));
+        if (curvatureRateProfile(window_).maxRate > sigma) return false;
+        window_.assign(curve_.end() - std::ptrdiff_t(std::min(curve_.size(), kAround)), curve_.end());
+        window_.insert(window_.end(), path.begin() + std::ptrdiff_t(j) + 1,
+                       path.begin() + std::ptrdiff_t(std::min(path.size(), j + 1 + kAround)));
+        return curvatureRateProfile(window_).maxRate <= sigma;
+    }
+
     /// The first candidate curve from path[i] to path[j] that passes every test, appended to
     /// @p out (its first pose left out); false if none does.
     bool replace(const std::vector<Pose2> &path, std::size_t i, std::size_t j, double oldLength, int arrive, int leave,
@@ -198,6 +237,7 @@ private:
                 old_.assign(path.begin() + std::ptrdiff_t(i), path.begin() + std::ptrdiff_t(j) + 1);
                 oldCost = stretchCost(old_, arrive, leave, q_, cost_, oldCusps);
             }
+            if (g_.clothoid && !(joinsWithinRate(out, path, j))) return !stopped();
             joined_.assign(1, a);
             joined_.insert(joined_.end(), curve_.begin(), curve_.end());
             int newCusps = 0;
@@ -242,10 +282,18 @@ private:
     {
         if (g_.clothoid)
         {
-            const ClothoidTurn &turn = *g_.clothoid;
-            for (const ClothoidCurve &c : clothoidCurves(a, b, turn, 2))
+            // the lattice's turns and the wider ones, the shortest curves first: a wider turn
+            // cuts a corner shorter where it is free, and is driven faster
+            cands_.clear();
+            for (const ClothoidTurn *t : turns_)
+                for (const ClothoidCurve &c : clothoidCurves(a, b, *t, 2))
+                    if (c.length < shorterThan) cands_.push_back({c, t});
+            std::sort(cands_.begin(), cands_.end(),
+                      [](const Candidate &x, const Candidate &y) { return x.curve.length < y.curve.length; });
+            for (const Candidate &cand : cands_)
             {
-                if (!(c.length < shorterThan)) break;
+                const ClothoidCurve &c = cand.curve;
+                const ClothoidTurn &turn = *cand.turn;
                 arc_.clear();
                 double at = 0;
                 for (const double l : {turn.length(c.delta1), c.straight, turn.length(c.delta2)})
@@ -319,6 +367,11 @@ private:
         Pose2 from;
         CurveSegment part;
     };
+    struct Candidate
+    {
+        ClothoidCurve curve;
+        const ClothoidTurn *turn;
+    };
     Geometry g_;
     const CarLatticeQuery &q_;
     const LatticeCostModel &cost_;
@@ -332,8 +385,13 @@ private:
     double maxAnchors_{g_.reverse ? kMaxAnchors : kRouteAnchors};
     double maxSpan_{g_.reverse ? std::numeric_limits<double>::infinity() : kRouteSpan * g_.radius};  ///< free curves from the current anchor that were no better
     std::vector<double> arc_;
-    std::vector<Pose2> curve_, old_, joined_;
+    std::vector<Pose2> curve_, old_, joined_, window_;
     std::vector<SampleRef> refs_;
+    std::vector<Candidate> cands_;
+    /// With clothoid turns: the lattice's (R_min) and wider ones (kWideTurns x R_min) at the
+    /// same curvature rate.
+    std::vector<std::unique_ptr<ClothoidTurn>> wide_;
+    std::vector<const ClothoidTurn *> turns_;
 };
 }  // namespace
 
