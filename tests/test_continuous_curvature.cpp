@@ -5,6 +5,7 @@
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/bench/PlanQuery.h"
 #include "gridcar/core/Angles.h"
+#include "gridcar/curves/ClothoidTurns.h"
 #include "gridcar/path/ContinuousCurvature.h"
 #include "gridcar/path/Cusps.h"
 #include "gridcar/path/Drivability.h"
@@ -17,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -59,6 +61,26 @@ CurvatureSmoothingOptions options(double kmax, double sigma)
     o.step = 0.02;
     o.free = [](const std::vector<Pose2> &) { return true; };
     return o;
+}
+/// Straight @p a metres, a clothoid turn (ClothoidTurn: curvature up to 1 / @p r at @p sigma
+/// and back) of @p turn radians, straight @p b metres, sampled every @p ds from the origin:
+/// within the rate already, as a lattice path of clothoid turns is.
+std::vector<Pose2> straightClothoidStraight(double a, double r, double sigma, double turn, double b, double ds)
+{
+    std::vector<Pose2> out{{0.0, 0.0, 0.0}};
+    const ClothoidTurn t(r, sigma);
+    const double len = t.length(turn);
+    const Pose2 e = t.pose(turn, len);
+    const int na = int(std::ceil(a / ds)), nt = int(std::ceil(len / ds)), nb = int(std::ceil(b / ds));
+    for (int i = 1; i <= na; ++i) out.push_back({a * i / na, 0.0, 0.0});
+    for (int i = 1; i <= nt; ++i)
+    {
+        const Pose2 q = t.pose(turn, len * i / nt);
+        out.push_back({a + q.x, q.y, wrapAngle(q.yaw)});
+    }
+    for (int i = 1; i <= nb; ++i)
+        out.push_back({a + e.x + b * i / nb * std::cos(e.yaw), e.y + b * i / nb * std::sin(e.yaw), wrapAngle(e.yaw)});
+    return out;
 }
 }  // namespace
 
@@ -139,6 +161,73 @@ TEST(ContinuousCurvature, BangBangTurnBecomesContinuousWithinTheRate)
             ASSERT_LT(std::abs(wrapAngle(std::atan2(dy, dx) - r.path[i].yaw)), 0.05);
         }
     }
+}
+
+// A clothoid turn at full lock between long straights (within the rate already): widenTurns()
+// replaces it by a wider turn, with a lower peak curvature, curvature 0 where it meets the
+// straights, a rate that the steering keeps up with at the wider turn's speed (sigma
+// sqrt(k_peak / K_max)), the same ends and turning, and no longer.
+TEST(ContinuousCurvature, WidenTurnsOpensAFullLockTurnWhereThereIsRoom)
+{
+    const double kmax = 0.25, sigma = 0.13;
+    for (double turn : {M_PI / 2, -M_PI / 3})
+    {
+        SCOPED_TRACE(turn);
+        const std::vector<Pose2> in = straightClothoidStraight(20.0, 1.0 / kmax, sigma, turn, 20.0, 0.05);
+        const CurvatureProfile before = curvatureRateProfile(in);
+        ASSERT_LE(before.maxRate, 1.02 * sigma);
+        ASSERT_GT(before.maxCurvature, 0.8 * kmax);
+        const CurvatureSmoothing r = widenTurns(in, options(kmax, sigma));
+        EXPECT_EQ(r.stretches, 1);
+        EXPECT_EQ(r.replaced, 1);
+        const CurvatureProfile after = curvatureRateProfile(r.path);
+        EXPECT_LT(after.maxCurvature, 0.6 * before.maxCurvature);
+        EXPECT_LE(after.maxRate, 1.02 * sigma * std::sqrt(after.maxCurvature / kmax));
+        EXPECT_LE(pathLength(r.path), pathLength(in) + 1e-6);
+        EXPECT_DOUBLE_EQ(r.path.front().x, in.front().x);
+        EXPECT_DOUBLE_EQ(r.path.back().x, in.back().x);
+        EXPECT_DOUBLE_EQ(r.path.back().y, in.back().y);
+        EXPECT_DOUBLE_EQ(r.path.back().yaw, in.back().yaw);
+        double turned = 0;
+        for (std::size_t i = 1; i < r.path.size(); ++i)
+        {
+            const double dx = r.path[i].x - r.path[i - 1].x, dy = r.path[i].y - r.path[i - 1].y;
+            ASSERT_LT(std::abs(wrapAngle(std::atan2(dy, dx) - r.path[i].yaw)), 0.05);
+            turned += wrapAngle(r.path[i].yaw - r.path[i - 1].yaw);
+        }
+        EXPECT_NEAR(turned, turn, 1e-6);
+    }
+}
+
+// Room only near the turn (the free test refuses any pose more than 1.5 m from the input): the
+// turn is widened less or kept, never leaves the room, and stays within the rate; with no room
+// at all the path is returned as it was.
+TEST(ContinuousCurvature, WidenTurnsStaysWhereTheFreeTestAllows)
+{
+    const double kmax = 0.25, sigma = 0.13;
+    const std::vector<Pose2> in = straightClothoidStraight(20.0, 1.0 / kmax, sigma, M_PI / 2, 20.0, 0.05);
+    const auto near = [&in](const Pose2 &q) {
+        double best = 1e9;
+        for (const Pose2 &p : in) best = std::min(best, std::hypot(p.x - q.x, p.y - q.y));
+        return best;
+    };
+    CurvatureSmoothingOptions o = options(kmax, sigma);
+    o.free = [&](const std::vector<Pose2> &poses) {
+        return std::all_of(poses.begin(), poses.end(), [&](const Pose2 &q) { return near(q) <= 1.5; });
+    };
+    const CurvatureSmoothing r = widenTurns(in, o);
+    for (const Pose2 &q : r.path) ASSERT_LE(near(q), 1.5 + 1e-9);
+    EXPECT_LE(curvatureRateProfile(r.path).maxRate, 1.02 * sigma);
+    EXPECT_LE(pathLength(r.path), pathLength(in) + 1e-6);
+    EXPECT_DOUBLE_EQ(r.path.back().yaw, in.back().yaw);
+
+    o.free = [](const std::vector<Pose2> &) { return false; };
+    const CurvatureSmoothing kept = widenTurns(in, o);
+    EXPECT_EQ(kept.replaced, 0);
+    ASSERT_EQ(kept.path.size(), in.size());
+    for (std::size_t i = 0; i < in.size(); ++i) EXPECT_DOUBLE_EQ(kept.path[i].x, in[i].x);
+    o.free = nullptr;
+    EXPECT_THROW(widenTurns(in, o), std::invalid_argument);
 }
 
 // A turn of 115 degrees at full lock is more than one quintic within the rate can replace

@@ -174,6 +174,16 @@ void CarFamily::smooth(const CarSearchOptions &options, std::vector<Pose2> &path
     };
     CurvatureSmoothing s = smoothCurvature(path, o);
     if (!s.cancelled) path = std::move(s.path);
+    // clothoid turns keep the rate but turn at full lock: wider where the map leaves room, with
+    // 5 cm more room than the search's margin (as the shortcut: for the follower)
+    if (!s.cancelled && cfg.curvatureRate > 0)
+    {
+        o.free = [this](const std::vector<Pose2> &poses) {
+            return last_->curveFree(poses[0], int(poses.size()) - 1, [&poses](int i) { return poses[std::size_t(i)]; }, 0.05);
+        };
+        CurvatureSmoothing w = widenTurns(path, o);
+        if (!w.cancelled) path = std::move(w.path);
+    }
 }
 
 void CarFamily::plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const

@@ -87,6 +87,20 @@ struct CurvatureSmoothing
  */
 CurvatureSmoothing smoothCurvature(const std::vector<Pose2> &path, const CurvatureSmoothingOptions &options);
 
+/**
+ * @brief Replaces each turn of @p path (a run of poses whose heading changes, runs less than
+ * 0.5 m apart joined) by a wider one where that is free: a G2 quintic from a pose on the
+ * straight before it to one on the straight after it, with curvature 0 at both, reaching up to
+ * twice the turn's length into each straight (at most half way to the next turn), the widest
+ * that passes first. A candidate is kept only if its curvature stays within K_max, its rate
+ * within the limit, it turns through the same angle, it is no longer than the stretch it
+ * replaces and the body is free along it (options.free); otherwise the turn stays as it was.
+ * For paths whose curvature already stays within the rate (clothoid turns at full lock): a
+ * wider turn is driven faster (the speed limit sqrt(a_lat / k)) and is shorter. Ends and cusps
+ * are kept; options.maxLengthGrowth is not used (never longer). Throws as smoothCurvature().
+ */
+CurvatureSmoothing widenTurns(const std::vector<Pose2> &path, const CurvatureSmoothingOptions &options);
+
 /// The curvature along a sampled curve and its rate, from the polyline alone (turning angle at
 /// each vertex over half its two segments; rate = the change between neighbouring vertices over
 /// the segment between them). Used by checkDrivable() and the tests.

@@ -165,6 +165,11 @@ bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<P
     return col_->curveFree(from, n, poseAt, lattice_->margin());
 }
 
+bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double extra) const
+{
+    return col_->curveFree(from, n, poseAt, lattice_->margin() + extra);
+}
+
 bool CarLatticeSearch::shotFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
 {
     // blocks of 64 poses (a multiple of FootprintCollision's blocks of 4, so the same poses are

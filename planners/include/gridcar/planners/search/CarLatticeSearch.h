@@ -181,6 +181,9 @@ public:
     bool motionFree(const Pose2 &from, const std::vector<Pose2> &poses) const;
     /// The same for poses 1..n given by @p poseAt (computed only where needed).
     bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const;
+    /// curveFree() with the body grown by @p extra metres more (room a follower needs where a
+    /// path is changed after the search).
+    bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double extra) const;
     /// curveFree() for the analytic expansion's long curves: polls the run's termination
     /// condition every 64 poses (a thousand poses on a slow application checker take tens of
     /// ms) and answers false when it fired.
