@@ -10,11 +10,13 @@
 #include "gridcar/bench/RandomPairs.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
+#include "gridcar/objectives/Objectives.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"
 
 #include <CLI/CLI.hpp>
 #include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
 
 #include <algorithm>
 #include <cmath>
@@ -59,7 +61,12 @@ struct Options
     std::vector<std::string> params;
     bool noMoving{false};
     std::string dumpDir;
+    double omplSeconds{0.0};  ///< > 0: OMPL's planners under the driving-time objective too
 };
+
+/// OMPL's optimizing planners compared under DrivingTimeObjective on OMPL's Dubins space (the
+/// suite's paths drive forwards), with --ompl-seconds.
+const std::vector<std::string> kOmpl = {"rrtstar", "bitstar"};
 
 void writeCsv(const std::string &file, const std::vector<Pose2> &path)
 {
@@ -76,6 +83,8 @@ struct Tally
     int plans{0}, exact{0}, drivable{0}, withinRate{0};
     int reached[2]{0, 0}, collided[2]{0, 0}, stuck[2]{0, 0}, timeout[2]{0, 0}, driven[2]{0, 0};
     std::vector<double> crossTrack, crossTrackMax, simTime, planTime;
+    /// Per pair: simulated driving time when driven to the goal without the pedestrian, else NaN.
+    std::vector<double> arrivedTime;
 };
 
 /// A pedestrian (a disc) that crosses the path at its middle, perpendicular to it, and reaches
@@ -116,6 +125,9 @@ double median(std::vector<double> v)
     return v[v.size() / 2];
 }
 
+Tally runPlanner(const Options &o, const Area &area, GridSetup &setup, const std::vector<std::pair<Pose2, Pose2>> &pairs,
+                 const ompl::base::PlannerPtr &planner, const std::string &label, double limit, std::vector<std::string> &failures);
+
 void runArea(const Options &o, const Area &area, std::vector<std::string> &failures)
 {
     std::shared_ptr<const OccupancyGrid> grid;
@@ -139,22 +151,62 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
     std::printf("| planner | exact | drivable (checked) | within the curvature rate | reached | collided | stuck / timeout | "
                 "with a pedestrian: reached | collided | stuck / timeout | cross-track median / max of means (m) | "
                 "simulated driving time, median / sum (s) | solve() median (ms) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::vector<std::pair<std::string, Tally>> rows;
     for (const auto &[name, params] : kPlanners)
     {
         PlannerParams all = params;
         for (const auto &kv : parsePlannerParams(o.params)) all.push_back(kv);
         auto planner = configurePlanner(setup.ss->getSpaceInformation(), {name, all, true, false});
         const std::string label = name + (params.empty() ? "" : " " + params[0].first + "=" + params[0].second);
+        rows.push_back({label, runPlanner(o, area, setup, pairs, planner, label, o.limit, failures)});
+    }
+    if (o.omplSeconds > 0)
+    {
+        // OMPL's planners on the Dubins space at R_min, minimising DrivingTimeObjective; they
+        // start at the pair's start yaw (they have no free start heading) and end at any heading
+        SetupOptions dubins;
+        dubins.space = SpaceKind::Dubins;
+        GridSetup dub = makeGridSetup(grid, v, dubins, setup.field);
+        dub.ss->setOptimizationObjective(makeObjective("driving-time", dub.ss->getSpaceInformation(), *dub.checker));
+        for (const std::string &name : kOmpl)
+        {
+            auto planner = configurePlanner(dub.ss->getSpaceInformation(), {name, {}, false, false});
+            const std::string label = name + " driving-time (Dubins)";
+            rows.push_back({label, runPlanner(o, area, dub, pairs, planner, label, o.omplSeconds, failures)});
+        }
+    }
+    // the same pairs for every row: those every planner above drove to the goal
+    std::vector<std::size_t> common;
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+        if (std::all_of(rows.begin(), rows.end(), [k](const auto &r) { return !std::isnan(r.second.arrivedTime[k]); }))
+            common.push_back(k);
+    std::printf("\nSimulated driving time on the %zu pairs every planner above drove to the goal (no pedestrian), sum:", common.size());
+    for (const auto &[label, t] : rows)
+    {
+        double sum = 0;
+        for (std::size_t k : common) sum += t.arrivedTime[k];
+        std::printf(" %s %.0f s%s", label.c_str(), sum, &label == &rows.back().first ? ".\n" : ";");
+    }
+    std::fflush(stdout);
+}
+
+/// One planner over an area's pairs: plan, check, drive; one table row.
+Tally runPlanner(const Options &o, const Area &area, GridSetup &setup, const std::vector<std::pair<Pose2, Pose2>> &pairs,
+                 const ompl::base::PlannerPtr &planner, const std::string &label, double limit, std::vector<std::string> &failures)
+{
+    const VehicleParams &v = setup.checker->vehicle();
+    {
         // the files of --failed-dir, one name per planner configuration (corner-astar and
         // corner-astar cost=time wrote over each other's)
         std::string fileLabel = label;
-        std::replace_if(fileLabel.begin(), fileLabel.end(), [](char ch) { return ch == ' ' || ch == '='; }, '-');
+        std::replace_if(fileLabel.begin(), fileLabel.end(), [](char ch) { return ch == ' ' || ch == '=' || ch == '(' || ch == ')'; }, '-');
         const std::string stemBase = o.dumpDir + "/" + area.name + "-" + area.vehicle + "-" + fileLabel + "-";
         Tally t;
+        t.arrivedTime.assign(pairs.size(), NAN);
         for (std::size_t k = 0; k < pairs.size(); ++k)
         {
             const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), g = withFittingYaw(*setup.checker, pairs[k].second);
-            const QueryResult r = runQuery(setup, planner, s, g, o.limit, /*freeGoalHeading=*/true);
+            const QueryResult r = runQuery(setup, planner, s, g, limit, /*freeGoalHeading=*/true);
             ++t.plans;
             t.planTime.push_back(r.seconds);
             if (r.status != ompl::base::PlannerStatus::EXACT_SOLUTION) continue;
@@ -186,6 +238,7 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
                 {
                     t.crossTrack.push_back(d.crossTrackMean);
                     t.simTime.push_back(d.drivingTime);
+                    if (d.outcome == DriveResult::Outcome::Reached) t.arrivedTime[k] = d.drivingTime;
                 }
                 if (d.outcome != DriveResult::Outcome::Reached)
                 {
@@ -224,6 +277,7 @@ void runArea(const Options &o, const Area &area, std::vector<std::string> &failu
                     ct.empty() ? NAN : *std::max_element(ct.begin(), ct.end()), median(t.simTime), simSum,
                     1e3 * median(t.planTime));
         std::fflush(stdout);
+        return t;
     }
 }
 }  // namespace
@@ -240,6 +294,11 @@ int main(int argc, char **argv)
     app.add_option("--only", o.only, "areas to run: willow-garage, mit-stata, ut-gdc-3ne, tsudanuma, campus (default: all)");
     app.add_option("--param", o.params, "NAME=VALUE set on every planner (repeatable)");
     app.add_flag("--no-moving", o.noMoving, "drive without the pedestrian only");
+    app.add_option("--ompl-seconds", o.omplSeconds,
+                   "also plan each pair with OMPL's RRT* and BIT* on the Dubins space under the driving-time objective, "
+                   "this long per query (s; 0: skip them)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     app.add_option("--failed-dir", o.dumpDir, "write the path and the simulated trajectory (with the pedestrian's position) of "
                                               "every run that does not arrive, and every path over the curvature rate "
                                               "(NAME-rate-path.csv), here as CSV (an existing directory)");
@@ -251,6 +310,7 @@ int main(int argc, char **argv)
             return 2;
         }
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    ompl::RNG::setSeed(o.seed);  // OMPL's planners (--ompl-seconds) sample reproducibly
     std::vector<std::string> failures;
     try
     {
