@@ -4,6 +4,7 @@
 
 #include "gridcar/core/Angles.h"
 #include "gridcar/path/Cusps.h"
+#include "detail/CurvatureStretch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -112,17 +113,8 @@ CurvatureProfile curvatureRateProfile(const std::vector<Pose2> &piece, double s0
     return prof;
 }
 
-namespace
+namespace detail
 {
-/// One piece (one direction of motion) being smoothed: its poses with the yaw of motion.
-struct Piece
-{
-    std::vector<Pose2> pts;  ///< yaw = direction of motion
-    std::vector<double> s;   ///< arc length at each pose
-    std::vector<double> k;   ///< curvature of each interval i -> i + 1
-    std::vector<char> bad;   ///< vertex where the curvature jumps faster than the limit
-};
-
 Piece makePiece(const std::vector<Pose2> &poses, bool backward, double sigma)
 {
     Piece p;
@@ -196,6 +188,12 @@ std::vector<Pose2> fitStretch(const Piece &p, std::size_t a, std::size_t b, doub
     }
     return out;
 }
+
+}  // namespace detail
+
+namespace
+{
+using namespace detail;
 
 /// Smooths one piece; returns the body poses (yaw turned back for a backward piece).
 std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, const CurvatureSmoothingOptions &o,
@@ -277,127 +275,11 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
     copyTo(n - 1);
     return out;
 }
-/// Widens the turns of one piece (widenTurns()); returns the body poses.
-std::vector<Pose2> widenPiece(const std::vector<Pose2> &poses, bool backward, const CurvatureSmoothingOptions &o,
-                              CurvatureSmoothing &r)
-{
-    const Piece p = makePiece(poses, backward, o.maxCurvatureRate);
-    const std::size_t n = p.pts.size();
-    const double flip = backward ? M_PI : 0.0;
-    auto body = [flip](const Pose2 &q) { return Pose2{q.x, q.y, wrapAngle(q.yaw + flip)}; };
-    std::vector<Pose2> out;
-    if (n == 0) return out;
-    // the turns: runs of intervals that turn, joined across straights shorter than kGap
-    constexpr double kGap = 0.5;
-    std::vector<std::pair<std::size_t, std::size_t>> turns;  // vertices [first, last] of each
-    for (std::size_t i = 0; i + 1 < n; ++i)
-    {
-        if (std::abs(p.k[i]) <= 1e-9) continue;
-        if (!turns.empty() && p.s[i] - p.s[turns.back().second] < kGap)
-            turns.back().second = i + 1;
-        else
-            turns.push_back({i, i + 1});
-    }
-    out.push_back(body(p.pts[0]));
-    std::size_t done = 0;  // p.pts[0..done] are in out
-    auto copyTo = [&](std::size_t e) {
-        for (std::size_t i = done + 1; i <= e; ++i) out.push_back(body(p.pts[i]));
-        done = std::max(done, e);
-    };
-    CurvatureSmoothingOptions noLonger = o;
-    noLonger.maxLengthGrowth = 0.0;
-    for (std::size_t t = 0; t < turns.size(); ++t)
-    {
-        if (o.cancelled && o.cancelled())
-        {
-            r.cancelled = true;
-            break;
-        }
-        const auto [first, last] = turns[t];
-        if (first < done) continue;
-        ++r.stretches;
-        // room on the straights either side: to the previous replacement or half way to the
-        // previous turn, half way to the next turn, the piece's ends
-        const double before = std::max(p.s[done], t > 0 ? 0.5 * (p.s[turns[t - 1].second] + p.s[first]) : 0.0);
-        const double after = t + 1 < turns.size() ? 0.5 * (p.s[last] + p.s[turns[t + 1].first]) : p.s[n - 1];
-        const double len = p.s[last] - p.s[first];
-        bool placed = false;
-        for (const double f : {2.0, 1.4, 1.0, 0.6, 0.3})
-        {
-            std::size_t a = first, b = last;
-            while (a > done && p.s[a - 1] >= std::max(before, p.s[first] - f * len)) --a;
-            while (b + 1 < n && p.s[b + 1] <= std::min(after, p.s[last] + f * len)) ++b;
-            if (a == first && b == last && f < 2.0) break;  // no room: the narrower tries are the same
-            for (const double e : {1.0, 0.8, 1.25, 0.65})
-            {
-                // the ends on straights: curvature 0 there (a piece's start or end stands: 0 too)
-                std::vector<Pose2> mid = fitStretch(p, a, b, 0.0, 0.0, e * (p.s[b] - p.s[a]), noLonger);
-                if (mid.empty()) continue;
-                // followable at its speed: the rate limit sigma holds at the speed of a turn
-                // at K_max, v_m = sqrt(a_lat / K_max); the steering's rate over time is fixed,
-                // so at the speed of this turn's peak curvature k_p, sqrt(a_lat / k_p), the
-                // curvature may change only sigma sqrt(k_p / K_max) per metre
-                std::vector<Pose2> motion{p.pts[a]};
-                motion.insert(motion.end(), mid.begin(), mid.end());
-                motion.push_back(p.pts[b]);
-                const CurvatureProfile prof = curvatureRateProfile(motion);
-                if (prof.maxRate > 0.97 * o.maxCurvatureRate * std::sqrt(std::min(1.0, prof.maxCurvature / o.maxCurvature)))
-                    continue;
-                std::vector<Pose2> test{body(p.pts[a])};
-                for (const Pose2 &q : mid) test.push_back(body(q));
-                test.push_back(body(p.pts[b]));
-                if (!o.free(test)) continue;
-                copyTo(a);
-                out.insert(out.end(), test.begin() + 1, test.end() - 1);
-                out.push_back(body(p.pts[b]));
-                done = b;
-                placed = true;
-                break;
-            }
-            if (placed) break;
-        }
-        if (placed) ++r.replaced;
-    }
-    copyTo(n - 1);
-    return out;
-}
-
-/// smoothCurvature() and widenTurns(): each piece (split at cusps when reversing) by @p each.
-template <class Each>
-CurvatureSmoothing byPieces(const std::vector<Pose2> &path, const CurvatureSmoothingOptions &o, const char *what,
-                            const Each &each)
-{
-    if (!o.free) throw std::invalid_argument(std::string(what) + ": no free test given");
-    if (!(o.maxCurvature > 0) || !(o.maxCurvatureRate > 0) || !(o.step > 0))
-        throw std::invalid_argument(std::string(what) + ": K_max, the curvature rate and the step must be positive");
-    CurvatureSmoothing r;
-    std::vector<PathPiece> pieces;
-    if (o.reversing)
-        pieces = splitAtCusps(path);
-    else
-        pieces.push_back({path, false});
-    for (const PathPiece &piece : pieces)
-    {
-        std::vector<Pose2> done = each(piece.poses, piece.backward, o, r);
-        const std::size_t skip = r.path.empty() ? 0 : 1;  // the shared cusp pose
-        r.path.insert(r.path.end(), done.begin() + std::ptrdiff_t(std::min(skip, done.size())), done.end());
-        if (r.cancelled) break;
-    }
-    if (r.cancelled) r.path = path;
-    for (const PathPiece &piece : o.reversing ? splitAtCusps(r.path) : std::vector<PathPiece>{{r.path, false}})
-        r.maxRate = std::max(r.maxRate, curvatureRateProfile(piece.poses).maxRate);
-    return r;
-}
 }  // namespace
-
-CurvatureSmoothing widenTurns(const std::vector<Pose2> &path, const CurvatureSmoothingOptions &o)
-{
-    return byPieces(path, o, "widenTurns", widenPiece);
-}
 
 CurvatureSmoothing smoothCurvature(const std::vector<Pose2> &path, const CurvatureSmoothingOptions &o)
 {
-    return byPieces(path, o, "smoothCurvature", smoothPiece);
+    return detail::byPieces(path, o, "smoothCurvature", smoothPiece);
 }
 
 }  // namespace gridcar

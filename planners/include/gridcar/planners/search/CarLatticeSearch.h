@@ -200,8 +200,9 @@ public:
      * its cusps; farther apart on a long path, at most about 80 of them on a reversing
      * lattice, 40 on a forward one, whose shortcuts span at most 12 R), from each one the
      * farthest later one that a curve of the lattice's family (Reeds-Shepp when it reverses,
-     * its clothoid turn-straight-turn curves with clothoid turns, else Dubins; the two
-     * shortest words) joins is reached by that curve, if the curve
+     * its clothoid turn-straight-turn curves with clothoid turns, also with turns of 2 and 4
+     * R at the same rate, else Dubins; the two shortest words of each) joins is reached by
+     * that curve, if the curve
      * - is free with the body grown 5 cm beyond the search's margin (curveFree(): every
      *   pose, swept motion certified as the search's own), so that it leaves a follower room
      *   instead of grazing what the lattice kept clear of,
@@ -209,7 +210,9 @@ public:
      *   quarter circle or 2 m),
      * - is shorter than the stretch it replaces, costs less by @p cost with @p q's reverse and
      *   cusp penalties and cost layer (each run of one gear and turning side costed as a
-     *   motion of the search), and adds no gear change.
+     *   motion of the search), and adds no gear change,
+     * - with clothoid turns: joins the path where it runs straight (its curves start and end
+     *   at curvature 0), the rate where it joins measured by curvatureRateProfile().
      * So the path keeps its ends and its guarantees (curvature within the lattice's turning
      * radius; within its curvature rate with clothoid turns), never gets longer or costlier,
      * and never gains a cusp: what a lattice's few headings and coarse cells leave over (a

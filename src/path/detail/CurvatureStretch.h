@@ -1,0 +1,62 @@
+#pragma once
+/// @file CurvatureStretch.h
+/// @brief The parts smoothCurvature() and widenTurns() share (private to gridcar_core): a path
+/// piece with its arc length and curvature, a G2 quintic fitted to a stretch of it within the
+/// limits, and the path taken piece by piece between its cusps.
+
+#include "gridcar/path/ContinuousCurvature.h"
+#include "gridcar/path/Cusps.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gridcar::detail
+{
+/// One piece (one direction of motion) being smoothed: its poses with the yaw of motion.
+struct Piece
+{
+    std::vector<Pose2> pts;  ///< yaw = direction of motion
+    std::vector<double> s;   ///< arc length at each pose
+    std::vector<double> k;   ///< curvature of each interval i -> i + 1
+    std::vector<char> bad;   ///< vertex where the curvature jumps faster than the limit
+};
+
+/// The piece of @p poses (driven backwards: yaws turned to the motion); a vertex is bad where
+/// the curvature changes faster than @p sigma.
+Piece makePiece(const std::vector<Pose2> &poses, bool backward, double sigma);
+
+/// A candidate replacement of pts[a..b]: its poses strictly between a and b (motion yaws), or
+/// empty when it breaks a limit.
+std::vector<Pose2> fitStretch(const Piece &p, std::size_t a, std::size_t b, double ka, double kb, double eta,
+                              const CurvatureSmoothingOptions &o);
+
+/// smoothCurvature() and widenTurns(): each piece (split at cusps when reversing) by @p each.
+template <class Each>
+CurvatureSmoothing byPieces(const std::vector<Pose2> &path, const CurvatureSmoothingOptions &o, const char *what,
+                            const Each &each)
+{
+    if (!o.free) throw std::invalid_argument(std::string(what) + ": no free test given");
+    if (!(o.maxCurvature > 0) || !(o.maxCurvatureRate > 0) || !(o.step > 0))
+        throw std::invalid_argument(std::string(what) + ": K_max, the curvature rate and the step must be positive");
+    CurvatureSmoothing r;
+    std::vector<PathPiece> pieces;
+    if (o.reversing)
+        pieces = splitAtCusps(path);
+    else
+        pieces.push_back({path, false});
+    for (const PathPiece &piece : pieces)
+    {
+        std::vector<Pose2> done = each(piece.poses, piece.backward, o, r);
+        const std::size_t skip = r.path.empty() ? 0 : 1;  // the shared cusp pose
+        r.path.insert(r.path.end(), done.begin() + std::ptrdiff_t(std::min(skip, done.size())), done.end());
+        if (r.cancelled) break;
+    }
+    if (r.cancelled) r.path = path;
+    for (const PathPiece &piece : o.reversing ? splitAtCusps(r.path) : std::vector<PathPiece>{{r.path, false}})
+        r.maxRate = std::max(r.maxRate, curvatureRateProfile(piece.poses).maxRate);
+    return r;
+}
+
+}  // namespace gridcar::detail
