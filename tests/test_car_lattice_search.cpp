@@ -104,6 +104,53 @@ TEST(CarLatticeSearch, HeuristicIsALowerBoundAgainstExhaustiveSearchOnRandomMaps
                 worstRatio, worstAstar, compared);
 }
 
+// A cost model in other units than metres whose 2D search is not weighted (as corner-astar's
+// cost=time, seconds): the obstacle heuristic's metres are scaled by the model's least cost per
+// metre, so the search still finds the optimum. Read as metres they overestimated V times (5
+// here), and the search returned paths far costlier than the optimum.
+TEST(CarLatticeSearch, HeuristicIsALowerBoundForACostInOtherUnits)
+{
+    struct Seconds : LatticeCostModel
+    {
+        double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double) const override { return length / 5.0; }
+        double minCostPerMetre() const override { return 1.0 / 5.0; }
+    };
+    int compared = 0;
+    for (unsigned seed = 1; seed <= 4; ++seed)
+    {
+        auto g = randomBlocks(seed);
+        auto field = std::make_shared<DistanceField>(*g);
+        FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
+        auto lattice = std::make_shared<const CarLattice>(
+            CarLatticeConfig{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()});
+        CarLatticeSearch search(fc, lattice);
+        std::mt19937 rng(seed * 13);
+        for (int k = 0; k < 4; ++k)
+        {
+            CarLatticeQuery q;
+            q.start = randomFree(fc, rng);
+            q.goal = randomFree(fc, rng);
+            q.shoot = false;
+            const double radius = 1.5 * lattice->cell();
+            q.inGoal = [&](const Pose2 &p) { return std::hypot(p.x - q.goal.x, p.y - q.goal.y) <= radius; };
+            Seconds cost;
+            const CarLatticeResult a = search.run(q, cost, [] { return false; });
+            const double h = search.heuristicAt(0, 0);
+            CarLatticeQuery blind = q;
+            blind.aim = false;
+            const CarLatticeResult d = search.run(blind, cost, [] { return false; });
+            ASSERT_EQ(a.exact, d.exact) << "seed " << seed;
+            if (!d.exact) continue;
+            ++compared;
+            // heuristicAt() is in metres (LengthCost): the bound in this model's seconds is a fifth
+            EXPECT_LE((h - radius) / 5.0, d.cost * (1 + 1e-9)) << "seed " << seed << " query " << k;
+            // the search aimed by it finds the optimum as with a cost in metres
+            EXPECT_LE(a.cost, d.cost * 1.06) << "seed " << seed << " query " << k;
+        }
+    }
+    EXPECT_GT(compared, 5);
+}
+
 TEST(CarLatticeSearch, EveryCarLatticePlannerReturnsDrivablePathsOnTheCampus)
 {
     auto grid = std::make_shared<const OccupancyGrid>(generateCampus());

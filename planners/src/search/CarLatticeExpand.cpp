@@ -34,7 +34,10 @@ struct CarExpander
         bounds.euclidean = {S.query_.goal, cost.minCostPerMetre()};
         // a hybrid state lies up to half a cell's diagonal from the node its 2D distance is read at
         const double slack = S.lattice_->hybrid() ? S.lattice_->cell() * M_SQRT1_2 : 0.0;
-        bounds.obstacle = {S.ratio_, (S.seedRadius_ + slack) * cost.minCostPerMetre()};
+        // the 2D search's distances are metres unless it weighs its edges by the model: in
+        // seconds under a driving-time cost they were read as metres, a bound V times too high
+        bounds.obstacle = {S.ratio_, (S.seedRadius_ + slack) * cost.minCostPerMetre(),
+                           cost.weighted() ? 1.0 : cost.minCostPerMetre()};
         bounds.turn = {S.query_.goal, cost.minTurnCostPerRad()};
         // a goal heading to match: the Reeds-Shepp / Dubins length to the goal pose, within
         // the query's distance of the goal

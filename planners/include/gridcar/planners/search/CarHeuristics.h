@@ -36,11 +36,15 @@ struct ObstacleBound
 {
     double ratio{1.0};
     double seedCost{0.0};  ///< seed radius x least cost per metre
+    /// Cost per metre of the 2D distance: the cost model's least (minCostPerMetre()) when the
+    /// 2D search counts metres, 1 when it weighs its edges in the model's units already
+    /// (LatticeCostModel::weighted()).
+    double perMetre{1.0};
     /// @p graphDistance: the 2D distance at the node (< 0: not computed, infinity: unreachable).
     double operator()(double graphDistance) const
     {
         if (graphDistance == std::numeric_limits<double>::infinity()) return graphDistance;
-        return graphDistance < 0 ? 0.0 : graphDistance / ratio - seedCost;
+        return graphDistance < 0 ? 0.0 : graphDistance * perMetre / ratio - seedCost;
     }
 };
 
