@@ -186,7 +186,7 @@ public:
     }
     double stepCost(const Pose2 &from, const std::vector<Pose2> &samples, double length, double absTurn) const override
     {
-        double t = 0.0, s = 0.0;
+        double t = 0.0, s = 0.0, vLow = vMax_;
         Pose2 a = from;
         for (const Pose2 &b : samples)
         {
@@ -195,10 +195,14 @@ public:
             const double v = k > 1e-9 && aLat_ > 0 ? std::min(vMax_, std::sqrt(aLat_ / k)) : vMax_;
             t += ds / v;
             s += ds;
+            vLow = std::min(vLow, v);
             a = b;
         }
         if (s < length) t += (length - s) / vMax_;  // a step whose samples do not cover it all
-        return t + cornerTimeLost(v_, absTurn);
+        // braking for the motion and accelerating after it: to the speed of its sharpest
+        // curvature (a small change of heading at full lock is driven as slowly as a large one),
+        // at least what the heading change costs taken as one smooth corner
+        return t + std::max(cornerTimeLost(v_, absTurn), cornerDistanceLost(v_, vLow) / vMax_);
     }
     double minCostPerMetre() const override { return 1.0 / vMax_; }
     double costPerMetreOfPenalty() const override { return 1.0 / vManoeuvre_; }
