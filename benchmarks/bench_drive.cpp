@@ -264,8 +264,9 @@ Tally runPlanner(const Options &o, const Area &area, GridSetup &setup, const std
                         }
                     }
                 }
-                std::fprintf(stderr, "  %s %s %s pair %zu%s: %s\n", area.name.c_str(), area.vehicle.c_str(), label.c_str(), k,
-                             m ? " (pedestrian)" : "", DriveResult::outcomeName(d.outcome).c_str());
+                std::fprintf(stderr, "  %s %s %s pair %zu (%.2f, %.2f -> %.2f, %.2f)%s: %s, %.1f s, path %.1f m\n", area.name.c_str(),
+                             area.vehicle.c_str(), label.c_str(), k, s.x, s.y, g.x, g.y, m ? " (pedestrian)" : "",
+                             DriveResult::outcomeName(d.outcome).c_str(), d.drivingTime, r.metrics.length);
             }
         }
         std::vector<double> ct = t.crossTrack;
