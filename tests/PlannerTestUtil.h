@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -126,6 +127,34 @@ inline bool isGrid(const std::string &name)
     for (const auto &n : gridPlannerNames())
         if (n == name) return true;
     return false;
+}
+
+/// A 9 m x 7 m map at 0.1 m with 30 seeded random blocks (the car-lattice search tests).
+inline std::shared_ptr<OccupancyGrid> randomBlocks(unsigned seed)
+{
+    auto g = std::make_shared<OccupancyGrid>(90, 70, 0.1, CellState::Free);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> uc(0, 89), ur(0, 69), sz(1, 9);
+    for (int k = 0; k < 30; ++k)
+    {
+        const int c = uc(rng), r = ur(rng), w = sz(rng), h = sz(rng);
+        for (int rr = r; rr < std::min(70, r + h); ++rr)
+            for (int cc = c; cc < std::min(90, c + w); ++cc) g->set(cc, rr, CellState::Occupied);
+    }
+    return g;
+}
+
+/// A random cell centre where the vehicle fits at one of 16 headings, with that heading.
+inline Pose2 randomFree(const FootprintChecker &fc, std::mt19937 &rng)
+{
+    const OccupancyGrid &g = fc.grid();
+    std::uniform_int_distribution<int> uc(0, g.width() - 1), ur(0, g.height() - 1);
+    for (;;)
+    {
+        const int c = uc(rng), r = ur(rng);
+        double yaw = 0;
+        if (fc.fitsAtSomeHeading(g.cellCenterX(c), g.cellCenterY(r), 16, &yaw)) return {g.cellCenterX(c), g.cellCenterY(r), yaw};
+    }
 }
 
 }  // namespace gridcar::test

@@ -51,12 +51,15 @@ struct CornerAStarParams
  * `cost = time` (car lattice only; default `corners`): paper C's future work, the driving time
  * itself as the search cost, in seconds: each primitive costs its length at the speed limit of
  * its curvature at every sample, min(v_max, sqrt(min(mu g, a_lat) / kappa)), plus the time lost
- * braking for its heading change and accelerating after it (cornerTimeLost(), the physics
- * weights' model in seconds); the heuristic is the lattice's distance bound / v_max (every metre
- * takes at least 1 / v_max seconds: admissible); a gear change costs `cusp_penalty` metres at
- * the manoeuvring speed. The corner weights do not act then. Braking is charged per primitive,
- * not from the speed the path arrives with (that would need the speed in the state), so a
- * string of small turns is charged more than a car loses on it.
+ * braking from v_max to the speed of its sharpest curvature and accelerating after it
+ * (cornerDistanceLost() / v_max; at least cornerTimeLost() of its heading change, the physics
+ * weights' model in seconds: a small heading change at full lock is driven as slowly as a
+ * large one); the heuristic is the lattice's distance bound / v_max (every metre takes at
+ * least 1 / v_max seconds: admissible, and weaker than the length bound, so the search expands
+ * more); a gear change costs `cusp_penalty` metres at the manoeuvring speed. The corner weights
+ * do not act then. Braking is charged per primitive, not from the speed the path arrives with
+ * (that would need the speed in the state), so a turn made of several primitives is charged
+ * more than a car loses on it.
  *
  * @par External documentation
  * Paper C: "Shortest driving-time path planning considering UGV driving characteristics and
