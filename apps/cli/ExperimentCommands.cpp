@@ -70,7 +70,8 @@ Command addPaperCCommand(CLI::App &app)
     c->add_option("--seed", o->seed, "Seed of the pairs")->capture_default_str();
     addTimeLimitOption(c, o->timeLimit, "Planning time limit per query, s");
     c->add_option("--corner-mode", o->cornerMode,
-                  "corner A*'s search: paper (paper C's 8-connected grid) or drivable (the car lattice)")
+                  "corner A*'s search: paper (paper C's 8-connected grid) or drivable (the car lattice; then the "
+                  "driving-time planner, corner-astar cost=time, runs beside them)")
         ->check(CLI::IsMember({"paper", "drivable"}))
         ->capture_default_str();
     return {c, [o] { return bench::runPaperC(*o); }};

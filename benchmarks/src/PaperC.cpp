@@ -1,5 +1,6 @@
 // gridcar paper-c: paper C's driving-time comparison (plain A* against corner-weighted A*,
-// driven in the simulation) and a corner-weight sweep.
+// driven in the simulation; with --corner-mode drivable also the driving-time planner) and a
+// corner-weight sweep.
 #include "gridcar/bench/PaperC.h"
 
 #include "gridcar/bench/Format.h"
@@ -44,13 +45,16 @@ struct Config
     PlannerParams params;
 };
 
-/// The three configurations; corner A* in @p cornerMode (`paper`: paper C's 8-connected grid;
-/// `drivable`: the car lattice).
+/// The configurations; corner A* in @p cornerMode (`paper`: paper C's 8-connected grid;
+/// `drivable`: the car lattice, and then also paper C's future work beside them, the
+/// driving-time planner: corner-astar `cost=time`).
 std::vector<Config> configs(const std::string &cornerMode)
 {
-    return {{"A* Euclidean", "astar-euclidean", {}},
-            {"corner A* (paper weights)", "corner-astar", {{"mode", cornerMode}, {"weights", "paper"}}},
-            {"corner A* (physics weights)", "corner-astar", {{"mode", cornerMode}, {"weights", "physics"}}}};
+    std::vector<Config> c = {{"A* Euclidean", "astar-euclidean", {}},
+                             {"corner A* (paper weights)", "corner-astar", {{"mode", cornerMode}, {"weights", "paper"}}},
+                             {"corner A* (physics weights)", "corner-astar", {{"mode", cornerMode}, {"weights", "physics"}}}};
+    if (cornerMode == "drivable") c.push_back({"driving-time planner (cost=time)", "corner-astar", {{"mode", "drivable"}, {"cost", "time"}}});
+    return c;
 }
 
 /// How one configuration did on one pair.
@@ -146,16 +150,43 @@ void runPairs(const PaperCOptions &o, const MapCase &mc, const std::string &vnam
             pr.drives.push_back(d);
         }
         const double el = std::chrono::duration<double>(Clock::now() - t0).count();
-        std::fprintf(stderr, "[paper-c] %s %s pair %zu/%zu: A* %.1f s, corner paper %.1f s, corner physics %.1f s "
+        std::fprintf(stderr, "[paper-c] %s %s pair %zu/%zu: A* %.1f s, corner paper %.1f s, corner physics %.1f s%s "
                              "(simulated; elapsed %.0f s)\n",
                      mc.key.c_str(), vname.c_str(), k + 1, pairs.size(), pr.drives[0].simTime, pr.drives[1].simTime,
-                     pr.drives[2].simTime, el);
+                     pr.drives[2].simTime,
+                     pr.drives.size() > 3 ? (", driving-time planner " + fixed(pr.drives[3].simTime, 1) + " s").c_str() : "", el);
         js.push_back(jp);
         all.push_back(pr);
     }
 }
 
 double pct(double a, double b) { return 100.0 * (b - a) / a; }
+
+/// The driving-time planner beside A* and corner A* (physics weights, the same dynamics): totals
+/// over the pairs all three drove to the goal.
+void writeTimedTable(std::ostringstream &md, const std::vector<MapCase> &maps, const std::vector<PairResult> &all)
+{
+    md << "\n### The driving-time planner (corner-astar cost=time) beside them\n\n"
+          "| map | vehicle | pairs driven by A*, corner (physics) and it | A* total s | corner (physics) total s | "
+          "driving-time planner total s | change against A* | against corner (physics) |\n|---|---|---|---|---|---|---|---|\n";
+    for (const MapCase &mc : maps)
+        for (const std::string vname : kVehicles)
+        {
+            double tot[3] = {0, 0, 0};
+            int n = 0;
+            for (const PairResult &pr : all)
+            {
+                if (pr.map != mc.key || pr.vehicle != vname || pr.drives.size() < 4) continue;
+                const double t[3] = {pr.drives[0].simTime, pr.drives[2].simTime, pr.drives[3].simTime};
+                if (std::isnan(t[0]) || std::isnan(t[1]) || std::isnan(t[2])) continue;
+                ++n;
+                for (int c = 0; c < 3; ++c) tot[c] += t[c];
+            }
+            md << "| " << mc.key << " | " << vname << " | " << n << " | " << fixed(tot[0], 1) << " | " << fixed(tot[1], 1) << " | "
+               << fixed(tot[2], 1) << " | " << (n ? fixed(pct(tot[0], tot[2]), 1) + " %" : "-") << " | "
+               << (n ? fixed(pct(tot[1], tot[2]), 1) + " %" : "-") << " |\n";
+        }
+}
 
 /// The aggregate table (per map and vehicle) and the per-pair table.
 void writeTables(std::ostringstream &md, const std::vector<MapCase> &maps, const std::vector<PairResult> &all)
@@ -184,8 +215,11 @@ void writeTables(std::ostringstream &md, const std::vector<MapCase> &maps, const
                << (n ? fixed(pct(tot[0], tot[2]), 1) + " %" : "-") << " | " << percentSummary(ch1) << " | "
                << percentSummary(ch2) << " |\n";
         }
+    const bool timed = !all.empty() && all.front().drives.size() > 3;
+    if (timed) writeTimedTable(md, maps, all);
     md << "\n### Per pair (simulated driving time s; length m; turns)\n\n"
-          "| map | vehicle | pair | straight m | A* | corner (paper) | corner (physics) |\n|---|---|---|---|---|---|---|\n";
+          "| map | vehicle | pair | straight m | A* | corner (paper) | corner (physics) |"
+       << (timed ? " driving-time planner |\n|---|---|---|---|---|---|---|---|\n" : "\n|---|---|---|---|---|---|---|\n");
     for (const PairResult &pr : all)
     {
         md << "| " << pr.map << " | " << pr.vehicle << " | " << pr.pair << " | " << fixed(pr.straight, 0);
