@@ -48,7 +48,8 @@ struct GridPlannerParams
     /// value / 252 (map_server scale / raw maps, Nav2 costmap values); 0 = the layer is ignored
     double costLayerWeight{0.0};
     /// `turns` (car lattice): arc (the lattice's turns are arcs at R_min) or clothoid (clothoid
-    /// turns within the curvature rate: the searched path's curvature is continuous)
+    /// turns within the curvature rate: the searched path's curvature is continuous; its
+    /// full-lock turns are then widened where there is room, widenTurns())
     std::string turns{"arc"};
     /// `shortcut` (car lattice): a found path shortened by the analytic expansion's curves
     /// where they are free, shorter and cheaper (CarLatticeSearch::shortcut()): auto (on when
