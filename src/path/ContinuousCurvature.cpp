@@ -201,16 +201,7 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
 {
     const Piece p = makePiece(poses, backward, o.maxCurvatureRate);
     const std::size_t n = p.pts.size();
-    const double flip = backward ? M_PI : 0.0;
-    auto body = [flip](const Pose2 &q) { return Pose2{q.x, q.y, wrapAngle(q.yaw + flip)}; };
-    std::vector<Pose2> out;
-    if (n == 0) return out;
-    out.push_back(body(p.pts[0]));
-    std::size_t done = 0;  // p.pts[0..done] are in out
-    auto copyTo = [&](std::size_t e) {
-        for (std::size_t i = done + 1; i <= e; ++i) out.push_back(body(p.pts[i]));
-        done = std::max(done, e);
-    };
+    PieceWriter writer(p, backward);
     std::size_t v = 1;
     while (v + 1 < n)
     {
@@ -236,9 +227,9 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
         {
             const double c = 0.5 * (lo + hi), h = 0.5 * (hi - lo) * f;
             std::size_t a = v - 1, b = v + 1;
-            while (a > done && p.s[a] > c - h) --a;
+            while (a > writer.done() && p.s[a] > c - h) --a;
             while (b + 1 < n && p.s[b] < c + h) ++b;
-            while (a > done && p.bad[a]) --a;
+            while (a > writer.done() && p.bad[a]) --a;
             while (b + 1 < n && p.bad[b]) ++b;
             // the curvature where the stretch meets the rest of the path is kept; at a piece's
             // ends (start, goal, cusp: the car stands) the wheels may be set to any angle, so
@@ -252,28 +243,18 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
                 const double ka = kas[(variant / 4) % 2], kb = kbs[variant / 8];
                 if ((variant / 4) % 2 == 1 && ka == kaIn) continue;
                 if (variant / 8 == 1 && kb == kbIn) continue;
-                std::vector<Pose2> mid = fitStretch(p, a, b, ka, kb, e * (p.s[b] - p.s[a]), o);
-                if (mid.empty()) continue;
-                std::vector<Pose2> test{body(p.pts[a])};
-                for (const Pose2 &q : mid) test.push_back(body(q));
-                test.push_back(body(p.pts[b]));
-                if (!o.free(test)) continue;
-                copyTo(a);
-                out.insert(out.end(), test.begin() + 1, test.end() - 1);
-                out.push_back(body(p.pts[b]));
-                done = b;
-                placed = true;
+                const std::vector<Pose2> mid = fitStretch(p, a, b, ka, kb, e * (p.s[b] - p.s[a]), o);
+                placed = !mid.empty() && writer.replace(a, b, mid, o.free);
             }
-            if (placed || (a <= done && b + 1 >= n)) break;
+            if (placed || (a <= writer.done() && b + 1 >= n)) break;
         }
         if (placed)
             ++r.replaced;
         else
-            copyTo(v);  // keep this jump as it was; the next one is tried on its own
-        v = std::max(v + 1, done + 1);
+            writer.copyTo(v);  // keep this jump as it was; the next one is tried on its own
+        v = std::max(v + 1, writer.done() + 1);
     }
-    copyTo(n - 1);
-    return out;
+    return writer.finish();
 }
 }  // namespace
 

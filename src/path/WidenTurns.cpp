@@ -21,10 +21,7 @@ std::vector<Pose2> widenPiece(const std::vector<Pose2> &poses, bool backward, co
 {
     const Piece p = makePiece(poses, backward, o.maxCurvatureRate);
     const std::size_t n = p.pts.size();
-    const double flip = backward ? M_PI : 0.0;
-    auto body = [flip](const Pose2 &q) { return Pose2{q.x, q.y, wrapAngle(q.yaw + flip)}; };
-    std::vector<Pose2> out;
-    if (n == 0) return out;
+    PieceWriter w(p, backward);
     // the turns: runs of intervals that turn, joined across straights shorter than kGap
     constexpr double kGap = 0.5;
     std::vector<std::pair<std::size_t, std::size_t>> turns;  // vertices [first, last] of each
@@ -36,12 +33,6 @@ std::vector<Pose2> widenPiece(const std::vector<Pose2> &poses, bool backward, co
         else
             turns.push_back({i, i + 1});
     }
-    out.push_back(body(p.pts[0]));
-    std::size_t done = 0;  // p.pts[0..done] are in out
-    auto copyTo = [&](std::size_t e) {
-        for (std::size_t i = done + 1; i <= e; ++i) out.push_back(body(p.pts[i]));
-        done = std::max(done, e);
-    };
     CurvatureSmoothingOptions noLonger = o;
     noLonger.maxLengthGrowth = 0.0;
     for (std::size_t t = 0; t < turns.size(); ++t)
@@ -52,18 +43,18 @@ std::vector<Pose2> widenPiece(const std::vector<Pose2> &poses, bool backward, co
             break;
         }
         const auto [first, last] = turns[t];
-        if (first < done) continue;
+        if (first < w.done()) continue;
         ++r.stretches;
         // room on the straights either side: to the previous replacement or half way to the
         // previous turn, half way to the next turn, the piece's ends
-        const double before = std::max(p.s[done], t > 0 ? 0.5 * (p.s[turns[t - 1].second] + p.s[first]) : 0.0);
+        const double before = std::max(p.s[w.done()], t > 0 ? 0.5 * (p.s[turns[t - 1].second] + p.s[first]) : 0.0);
         const double after = t + 1 < turns.size() ? 0.5 * (p.s[last] + p.s[turns[t + 1].first]) : p.s[n - 1];
         const double len = p.s[last] - p.s[first];
         bool placed = false;
         for (const double f : {2.0, 1.4, 1.0, 0.6, 0.3})
         {
             std::size_t a = first, b = last;
-            while (a > done && p.s[a - 1] >= std::max(before, p.s[first] - f * len)) --a;
+            while (a > w.done() && p.s[a - 1] >= std::max(before, p.s[first] - f * len)) --a;
             while (b + 1 < n && p.s[b + 1] <= std::min(after, p.s[last] + f * len)) ++b;
             if (a == first && b == last && f < 2.0) break;  // no room: the narrower tries are the same
             for (const double e : {1.0, 0.8, 1.25, 0.65})
@@ -81,23 +72,13 @@ std::vector<Pose2> widenPiece(const std::vector<Pose2> &poses, bool backward, co
                 const CurvatureProfile prof = curvatureRateProfile(motion);
                 if (prof.maxRate > 0.97 * o.maxCurvatureRate * std::sqrt(std::min(1.0, prof.maxCurvature / o.maxCurvature)))
                     continue;
-                std::vector<Pose2> test{body(p.pts[a])};
-                for (const Pose2 &q : mid) test.push_back(body(q));
-                test.push_back(body(p.pts[b]));
-                if (!o.free(test)) continue;
-                copyTo(a);
-                out.insert(out.end(), test.begin() + 1, test.end() - 1);
-                out.push_back(body(p.pts[b]));
-                done = b;
-                placed = true;
-                break;
+                if ((placed = w.replace(a, b, mid, o.free))) break;
             }
             if (placed) break;
         }
         if (placed) ++r.replaced;
     }
-    copyTo(n - 1);
-    return out;
+    return w.finish();
 }
 }  // namespace
 
