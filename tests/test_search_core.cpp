@@ -1,6 +1,7 @@
 // The search core's building blocks: the open list's order and the integer keys it sorts by.
 // (The A* loop itself is tested through the planners: test_planners.cpp, test_improved_astar.cpp.)
 #include "gridcar/planners/search/AStar.h"
+#include "gridcar/planners/search/detail/StateInterner.h"
 
 #include <gtest/gtest.h>
 
@@ -216,4 +217,25 @@ TEST(SearchCore, DecreaseKeyAndLazyDeletionSearchesAreIdentical)
         if (a.outcome == SearchOutcome::Found) ++compared;
     }
     EXPECT_GE(compared, 6);
+}
+
+TEST(SearchCore, StateInternerFindsOnlyKeysItHasSeen)
+{
+    // find() adds nothing and answers as intern() would, also while a doubling is under way
+    StateInterner s;
+    std::mt19937_64 rng(3);
+    std::vector<std::uint64_t> keys;
+    for (int i = 0; i < 20000; ++i)
+    {
+        const std::uint64_t k = rng();
+        EXPECT_EQ(s.find(k), StateInterner::kNone);
+        EXPECT_EQ(s.size(), std::size_t(i));  // the miss added nothing
+        EXPECT_EQ(s.intern(k), std::uint32_t(i));
+        keys.push_back(k);
+        const std::uint64_t old = keys[std::size_t(rng() % keys.size())];
+        EXPECT_EQ(s.find(old), s.intern(old));
+    }
+    for (std::size_t i = 0; i < keys.size(); ++i) EXPECT_EQ(s.find(keys[i]), std::uint32_t(i));
+    s.clear();
+    EXPECT_EQ(s.find(keys[0]), StateInterner::kNone);
 }

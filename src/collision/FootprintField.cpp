@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gridcar
 {
@@ -213,6 +214,22 @@ bool FootprintChecker::provenBlocked(const Pose2 &p) const
 {
     if (!std::isfinite(p.yaw)) return true;
     return provenBlockedAt(p.x, p.y, inscribedDiscOffsets(p.yaw));
+}
+
+double FootprintChecker::freeSlack(const Pose2 &p) const
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw) || vehicle_.isPoint()) return 0.0;
+    // the discs of quickBody()'s cover: the rectangle grown by r lies inside the discs grown by r
+    const Body &b = body_;
+    const double cs = std::cos(p.yaw), sn = std::sin(p.yaw);
+    double slack = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < b.discs && slack > 0; ++k)
+    {
+        const double along = b.firstDisc + k * b.discStep;
+        const Cell dc = grid_->worldToCell(p.x + along * cs, p.y + along * sn);
+        slack = std::min(slack, field_->cellDistance(dc.col, dc.row) - 2.0 * halfDiag_ - b.discR);
+    }
+    return slack;
 }
 
 bool FootprintChecker::provenFree(const Pose2 &p, double margin) const

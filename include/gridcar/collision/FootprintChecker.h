@@ -92,6 +92,15 @@ public:
     /// they prove it free (no FCL; false means "not proven", not "in collision").
     bool provenFree(const Pose2 &p, double margin) const;
     /**
+     * @brief How far (m) every point of the body at @p p may move with the body still free,
+     * as the distance field proves it: the least slack of the discs that cover the rectangle
+     * (each disc's distance to the nearest blocked cell, less its radius and the cells'
+     * rounding): the body moved so that no point of it travels farther is free, and so is the
+     * rectangle grown by any margin below slack / sqrt(2) (its corners). 0 or less: nothing proven
+     * (always so for a point vehicle and for a pose that is not finite). A few lookups, no FCL.
+     */
+    double freeSlack(const Pose2 &p) const;
+    /**
      * @brief True only if the distance field proves the rectangle in collision: a blocked
      * cell under its centre, or a blocked cell centre within r of a point of its axis where the
      * disc of radius r = min(length, width) / 2 lies inside the rectangle (points at most 2 r apart from

@@ -28,22 +28,32 @@ std::array<double, 4> FootprintCollision::extent() const
 
 bool FootprintCollision::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double m) const
 {
-    // Blocks of kStride poses. A block whose two end poses the distance field alone proves free
-    // with the rectangle grown by kStride x margin is free (no body point moves more than
-    // kStride x spacing between them); otherwise each of its poses is checked exactly with the
-    // margin. In open space this takes a quarter of the lookups and never reaches FCL; it stops
-    // at the first pose in collision.
-    constexpr int kStride = 4;
-    const double mc = kStride * m;
-    bool prevProven = c_.provenFree(from, mc);
-    for (int b = 1; b <= n; b += kStride)
+    // No body point moves more than 2 m from one pose to the next (the caller's spacing). A
+    // pose whose body the distance field proves free with slack r (freeSlack(): every body
+    // point may move r) proves the next (r - sqrt(2) m) / 2 m poses free with the margin (the
+    // grown rectangle's corners reach sqrt(2) m out): in open space one lookup stands for many
+    // poses. Where it proves too little, the pose is checked exactly with the margin (FCL only
+    // where the distance field cannot decide). Stops at the first pose in collision.
+    const double step = 2 * m, grown = M_SQRT2 * m;
+    const auto reach = [&](double slack) {
+        return slack > grown && step > 0 ? std::min(double(n), std::floor((slack - grown) / step)) : 0.0;
+    };
+    // first the cheap proof of a collision (inscribed discs) at every kCoarse-th pose from the
+    // end: most motions that hit something are found here without the exact test
+    constexpr int kCoarse = 16;
+    for (int i = n; i >= 1; i -= kCoarse)
+        if (c_.provenBlocked(poseAt(i))) return false;
+    int proven = int(reach(c_.freeSlack(from)));  // poses 1..proven are free
+    for (int i = proven + 1; i <= n; ++i)
     {
-        const int e = std::min(n, b + kStride - 1);
-        const bool endProven = c_.provenFree(poseAt(e), mc);
-        if (!(prevProven && endProven))
-            for (int i = b; i <= e; ++i)
-                if (!c_.isValidInflated(poseAt(i), m)) return false;
-        prevProven = endProven;
+        const Pose2 p = poseAt(i);
+        const double slack = c_.freeSlack(p);
+        if (slack >= grown)
+        {
+            i += int(std::min(reach(slack), double(n - i)));
+            continue;
+        }
+        if (!c_.isValidInflated(p, m)) return false;
     }
     return true;
 }

@@ -83,6 +83,7 @@ struct CarExpander
         const auto &prims = S.lattice_->primitives(k.h);
         const bool hybrid = S.lattice_->hybrid();
         const double c = S.lattice_->cell(), ca = std::cos(at.yaw), sa = std::sin(at.yaw);
+        const double gs = S.space_.g(s);
         for (std::size_t p = 0; p < prims.size(); ++p)
         {
             const LatticePrimitive &prim = prims[p];
@@ -100,15 +101,18 @@ struct CarExpander
             }
             if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
             S.worldSamples(at, prim, samples);
-            if (!S.motionFree(from, samples)) continue;
-            const double hn = hAt(end, ni, nj);
-            if (hn == kInf) continue;
-            const std::uint32_t id = S.intern(ni, nj, nh);
             double step = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
             step += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
             const std::int8_t gear = prim.reverse ? -1 : 1;
             if (prim.reverse != S.query_.timeReversed) step *= S.query_.reversePenalty;  // driven backwards
             if (S.gear_[s] != 0 && S.gear_[s] != gear) step += S.query_.cuspPenalty;  // a gear change
+            // a motion to a state it would not improve is dropped by the search: not checked
+            const std::uint32_t seen = S.known(ni, nj, nh);
+            if (seen != StateInterner::kNone && !(gs + step < S.space_.g(seen))) continue;
+            if (!S.motionFree(from, samples)) continue;
+            const double hn = hAt(end, ni, nj);
+            if (hn == kInf) continue;
+            const std::uint32_t id = seen != StateInterner::kNone ? seen : S.intern(ni, nj, nh);
             emit(id, step, [this, id, p, hn, gear, end] {
                 S.prim_[id] = std::int16_t(p);
                 S.gear_[id] = gear;

@@ -172,8 +172,7 @@ bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<P
 
 bool CarLatticeSearch::shotFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
 {
-    // blocks of 64 poses (a multiple of FootprintCollision's blocks of 4, so the same poses are
-    // checked the same way), the run's termination condition polled between them
+    // blocks of 64 poses, the run's termination condition polled between them
     constexpr int kBlock = 64;
     Pose2 blockStart = from;
     for (int b = 0; b < n; b += kBlock)

@@ -28,9 +28,10 @@ public:
     virtual bool poseFree(const Pose2 &p) const = 0;
     /// The car fits at one of @p steps equally spaced headings at (x, y).
     bool fitsAtSomeHeading(double x, double y, int steps) const;
-    /// The motion from @p from through poses 1..n (poseAt(i)) is free; @p margin (m) is how
-    /// far a body point may move between two poses (a checker that can grow the rectangle by
-    /// it certifies the sweep; one that cannot checks the poses alone).
+    /// The motion from @p from through poses 1..n (poseAt(i)) is free. The poses are spaced so
+    /// that no body point moves more than 2 @p margin (m) from one to the next: a checker that
+    /// can grow the rectangle by the margin certifies the sweep; one that cannot checks the
+    /// poses alone.
     virtual bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double margin) const = 0;
     /// How far the farthest body point is from the reference point (m): sample counts of
     /// curves scale by 1 + reach / R so that body points move at most the lattice spacing.

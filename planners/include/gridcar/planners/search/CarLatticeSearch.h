@@ -233,6 +233,8 @@ private:
     std::uint64_t pack(int i, int j, int h) const;
     Key unpack(std::uint64_t k) const;
     std::uint32_t intern(int i, int j, int h);
+    /// The state of node (i, j, h) if this run has seen it, else StateInterner::kNone.
+    std::uint32_t known(int i, int j, int h) const { return states_.find(pack(i, j, h)); }
     void setFrame(const CarLatticeQuery &q);
     bool fitsAtNode(int i, int j) const;
     bool tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions);

@@ -55,6 +55,16 @@ public:
         return id;
     }
 
+    /// The id of @p key if it was seen, else kNone (nothing is added).
+    std::uint32_t find(std::uint64_t key) const
+    {
+        if (const std::uint32_t *slot = findIn(table_, key)) return *slot - 1;
+        if (old_.n)
+            if (const std::uint32_t *slot = findIn(old_, key)) return *slot - 1;
+        return kNone;
+    }
+    static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
     std::uint64_t key(std::uint32_t id) const { return keys_[id >> kChunkBits][id & (kChunk - 1)]; }
     std::size_t size() const { return size_; }
 
