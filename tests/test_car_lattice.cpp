@@ -117,6 +117,13 @@ TEST(CarLattice, ClothoidTurnsJoinNodesWithContinuousCurvatureWithinTheRate)
                 cfg.curvatureRate = sigma;
                 const CarLattice L(cfg);
                 for (int h = 0; h < headings; ++h)
+                {
+                    // turns of up to 90 degrees each: a corner need not straighten the wheel
+                    double widest = 0;
+                    for (const LatticePrimitive &p : L.primitives(h)) widest = std::max(widest, std::abs(p.turn));
+                    EXPECT_NEAR(widest, M_PI / 2, 1e-9) << "heading " << h;
+                }
+                for (int h = 0; h < headings; ++h)
                     for (std::size_t k = 0; k < L.primitives(h).size(); ++k)
                     {
                         const LatticePrimitive &p = L.primitives(h)[k];
@@ -325,4 +332,32 @@ TEST(CarLattice, ClothoidTurnsGivePathsWithinTheCurvatureRate)
         EXPECT_NEAR(f.path.back().y, 7.91, 1e-6);
         EXPECT_LE(f.drivability.maxCurvatureRate, 1.02 * v.curvatureRateLimit()) << name;
     }
+}
+
+// `turns=auto` (the default): clothoid turns towards a goal position (a route: within the
+// rate), the arcs' lattice towards a goal pose (a manoeuvre: the same path as `turns=arc`).
+TEST(CarLattice, TurnsAutoIsClothoidForRoutesAndArcsForPoses)
+{
+    GridSetup setup = test::carSetup(SpaceKind::SE2);
+    const VehicleParams v = VehicleParams::preset("paper-i");
+    const auto planner = [&](const char *turns) {
+        PlannerParams p;
+        if (turns) p.push_back({"turns", turns});
+        return configurePlanner(setup.ss->getSpaceInformation(), {"corner-astar", p, false, false});
+    };
+    const auto byDefault = planner(nullptr);
+    EXPECT_EQ(byDefault->params().getParam("turns")->getValue(), "auto");
+    const QueryResult route = runQuery(setup, byDefault, {5, 5, M_PI / 2}, {55, 5, 0.0}, 30.0, /*freeGoalHeading=*/true);
+    ASSERT_EQ(route.status, ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_TRUE(route.drivability.drivable) << route.drivability.reason;
+    EXPECT_LE(route.drivability.maxCurvatureRate, 1.02 * v.curvatureRateLimit());
+    const QueryResult pose = runQuery(setup, byDefault, {5, 5, M_PI / 2}, {55, 5, -M_PI / 2}, 30.0, false);
+    const QueryResult arcs = runQuery(setup, planner("arc"), {5, 5, M_PI / 2}, {55, 5, -M_PI / 2}, 30.0, false);
+    ASSERT_EQ(pose.status, ob::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_EQ(arcs.status, ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(pose.path.size(), arcs.path.size());
+    EXPECT_DOUBLE_EQ(pose.metrics.length, arcs.metrics.length);
+    const QueryResult clothoid = runQuery(setup, planner("clothoid"), {5, 5, M_PI / 2}, {55, 5, -M_PI / 2}, 30.0, false);
+    ASSERT_EQ(clothoid.status, ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_NE(clothoid.metrics.length, arcs.metrics.length);  // the choice really differs here
 }

@@ -214,16 +214,17 @@ TEST(Simulation, TheWheelsTurnAtAStandstillWhereTheCurvatureJumps)
 }
 
 // Blocked at speed, the follower brakes with the steering whose braking stays free. On the
-// Tsudanuma campus (../shared) paper C's car follows improved-astar's shortcut path between a
-// drive-suite pair through a pinch point at 5.5 m/s, 3.6 degrees behind the path's heading;
-// every command failed the 0.6 s rollout there and braking with the refused one hit the map
-// at (-12.9, -137.5), 79 m along a path the independent check passes. Now it arrives.
+// Tsudanuma campus (../shared) paper C's car follows improved-astar's shortcut path (the
+// lattice's turns as arcs) between a drive-suite pair through a pinch point at 5.5 m/s, 3.6
+// degrees behind the path's heading; every command failed the 0.6 s rollout there and braking
+// with the refused one hit the map at (-12.9, -137.5), 79 m along a path the independent
+// check passes. Now it arrives.
 TEST(Simulation, AFastCarBlockedAtAPinchPointBrakesClearOfIt)
 {
     GRIDCAR_REQUIRE_SHARED_MAPS();
     auto grid = std::make_shared<const OccupancyGrid>(loadRosMap(test::sharedMaps() + "/ros/tsudanuma_campus/tsudanuma_all.yaml"));
     GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
-    auto p = configurePlanner(s.ss->getSpaceInformation(), {"improved-astar", {{"mode", "integral"}, {"shortcut", "on"}}, true, false});
+    auto p = configurePlanner(s.ss->getSpaceInformation(), {"improved-astar", {{"mode", "integral"}, {"shortcut", "on"}, {"turns", "arc"}}, true, false});
     const QueryResult r = runQuery(s, p, {48.525, -102.975, -2.677945}, {-82.975, -80.525, 0.0}, 10.0, /*freeGoalHeading=*/true);
     ASSERT_EQ(r.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
     ASSERT_TRUE(r.drivability.drivable) << r.drivability.reason;

@@ -14,14 +14,18 @@
 
 namespace gridcar
 {
-void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision, const CarLatticeConfig *fallback)
+void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision, const CarLatticeConfig *fallback,
+                      const CarLatticeConfig *forPoses)
 {
     last_ = nullptr;
     const bool same = collision == collision_ && search_ && search_->lattice().config() == cfg;
     const bool sameFallback = fallback ? fallback_ && fallback_->lattice().config() == *fallback : !fallback_;
-    if (same && sameFallback) return;
+    const bool samePoses = forPoses ? forPoses_ && forPoses_->lattice().config() == *forPoses : !forPoses_;
+    if (same && sameFallback && samePoses && collision == collision_) return;
     collision_ = std::move(collision);
     if (!same) search_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(cfg));
+    forPoses_.reset();
+    if (forPoses) forPoses_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(*forPoses));
     fallback_.reset();
     fine_.reset();
     if (!fallback) return;
@@ -69,8 +73,10 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     }
     FamilyRun run;
     const auto t0 = std::chrono::steady_clock::now();
-    CarLatticeResult r = search_->run(q, cost, cancelled, progress);
-    last_ = search_.get();
+    // a goal heading to meet: the primitive set for manoeuvres, where there is one
+    CarLatticeSearch *main = q.goalYawTolerance >= 0 && forPoses_ ? forPoses_.get() : search_.get();
+    CarLatticeResult r = main->run(q, cost, cancelled, progress);
+    last_ = main;
     // Where the search from the start ends without the goal (not stopped), the next searches
     // in the time that is left: Hybrid A*'s finer manoeuvres (the lattice's nodes could not make
     // it: a tight spot); and for a goal pose to be met exactly from a start pose, with
@@ -87,7 +93,7 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         bool done{false};
     };
     std::vector<Stage> stages;
-    if (fixedEnds && search_->lattice().config().reverse) stages.push_back({search_.get(), true});
+    if (fixedEnds && main->lattice().config().reverse) stages.push_back({main, true});
     if (fallback_)
     {
         stages.push_back({fallback_.get(), false});

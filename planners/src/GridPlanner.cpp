@@ -87,13 +87,18 @@ void GridPlanner::setup()
         if (params_.reverse == "on" && onDubinsSpace())
             throw std::invalid_argument(getName() + ": reverse=on on a Dubins space, which drives forwards only (use "
                                                     "reverse=auto or the Reeds-Shepp space)");
+        // turns=auto: the lattice's clothoid turns for routes, its arcs for a goal pose to meet
+        const CarLatticeConfig cfg = carLatticeConfig();
+        CarLatticeConfig arcs = cfg;
+        arcs.curvatureRate = 0.0;
+        const CarLatticeConfig *forPoses = params_.turns == "auto" && cfg != arcs ? &arcs : nullptr;
         if (params_.primitives == "auto")
         {
             const CarLatticeConfig hybrid = carLatticeConfig(true);
-            car_.setup(carLatticeConfig(false), collision_, &hybrid);
+            car_.setup(cfg, collision_, &hybrid, forPoses);
         }
         else
-            car_.setup(carLatticeConfig(), collision_);
+            car_.setup(cfg, collision_, nullptr, forPoses);
         return;  // no per-cell move cache or dense search arrays on the car lattice
     }
     std::unique_ptr<GridNodes> nodes = makeGridNodes();

@@ -31,7 +31,7 @@ void GridPlanner::declareCarLatticeParams()
                          "0.:0.05:100.");
     declareParam<double>("cost_layer_weight", this, &GridPlanner::setCostLayerWeight, &GridPlanner::costLayerWeight,
                          "0.:0.5:100.");
-    declareParam<std::string>("turns", this, &GridPlanner::setTurns, &GridPlanner::turns, "arc,clothoid");
+    declareParam<std::string>("turns", this, &GridPlanner::setTurns, &GridPlanner::turns, "auto,arc,clothoid");
     declareParam<std::string>("shortcut", this, &GridPlanner::setShortcut, &GridPlanner::shortcut, "auto,on,off");
 }
 
@@ -46,7 +46,8 @@ void GridPlanner::setShortcut(const std::string &mode)
 
 void GridPlanner::setTurns(const std::string &t)
 {
-    if (t != "arc" && t != "clothoid") throw std::invalid_argument(getName() + ": turns must be arc or clothoid, got '" + t + "'");
+    if (t != "auto" && t != "arc" && t != "clothoid")
+        throw std::invalid_argument(getName() + ": turns must be auto, arc or clothoid, got '" + printable(t) + "'");
     params_.turns = t;
     parameterSet("turns");
 }
@@ -229,7 +230,7 @@ CarLatticeConfig GridPlanner::carLatticeConfig(bool hybrid) const
     cfg.turnRadius = rmin > 0 ? 1.01 * rmin : cfg.cell;
     cfg.reverse = reversing();
     // clothoid turns a little inside the rate, so that sampled paths measure within it
-    if (params_.turns == "clothoid")
+    if (params_.turns == "clothoid" || (params_.turns == "auto" && !hybrid))
     {
         const double sigma = params_.curvatureRate > 0 ? params_.curvatureRate : vehicle().curvatureRateLimit();
         if (std::isfinite(sigma) && sigma > 0) cfg.curvatureRate = 0.95 * sigma;

@@ -58,6 +58,12 @@ CarLattice::CarLattice(const CarLatticeConfig &config) : config_(config)
             if (!addTurn(h, dir, config.turnRadius)) throw std::logic_error("car lattice: no turn primitive found");
             for (double r : config.extraRadii) addTurn(h, dir, r);
         }
+        // clothoid turns start and end at curvature 0: a corner made of one-step turns would
+        // straighten the wheel between steps (a wider, longer corner). Turns of several steps,
+        // up to 90 degrees, are one clothoid turn each, at full lock where they need it.
+        if (config.curvatureRate > 0)
+            for (int steps = 2; steps <= config.headings / 4; ++steps)
+                for (int dir : {steps, -steps}) addTurn(h, dir, config.turnRadius);
     }
     if (config.reverse)
         for (int h = 0; h < config.headings; ++h) addReverse(h);
@@ -185,7 +191,7 @@ bool CarLattice::addTurn(int h, int dir, double R)
     const int n = headings();
     const int to = ((h + dir) % n + n) % n;
     const double t1 = yaw_[h], t2 = yaw_[to];
-    const double delta = wrapAngle(t2 - t1);  // signed, |delta| < 90 degrees
+    const double delta = wrapAngle(t2 - t1);  // signed, 0 < |delta| <= 90 degrees
     const double c = config_.cell, sg = delta > 0 ? 1.0 : -1.0;
     // displacement of the curved part alone (an arc of curvature sg / R, or a clothoid turn,
     // from yaw t1 to t2)

@@ -49,8 +49,10 @@ public:
     /// @p fallback, further searches on that primitive set (the hybrid one) and on it at half
     /// its cell, that a query runs when the first ends without reaching the goal and time is
     /// left (solve() says in which order).
+    /// With @p forPoses, a query whose goal heading is to be met starts on that primitive
+    /// set instead of @p cfg (`turns=auto`: arcs for a manoeuvre, clothoid turns for a route).
     void setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision,
-               const CarLatticeConfig *fallback = nullptr);
+               const CarLatticeConfig *fallback = nullptr, const CarLatticeConfig *forPoses = nullptr);
     /// The search of the last query (the first one before any; null before setup()).
     const CarLatticeSearch *search() const { return last_ ? last_ : search_.get(); }
 
@@ -66,8 +68,9 @@ public:
 private:
     void smooth(const CarSearchOptions &options, std::vector<Pose2> &path, const std::function<bool()> &cancelled);
     std::shared_ptr<CarCollision> collision_;
-    /// the lattice; the hybrid fallback; the hybrid at half its cell, where both ran out
-    std::unique_ptr<CarLatticeSearch> search_, fallback_, fine_;
+    /// the lattice; the hybrid fallback; the hybrid at half its cell, where both ran out; the
+    /// lattice for a goal heading to meet (null: search_)
+    std::unique_ptr<CarLatticeSearch> search_, fallback_, fine_, forPoses_;
     CarLatticeConfig fineConfig_;  ///< fine_'s primitive set (fine_ is built on first use)
     const CarLatticeSearch *last_{nullptr};
 };

@@ -47,10 +47,14 @@ struct GridPlannerParams
     /// `cost_layer_weight` (car lattice): extra cost per metre = weight x the map's cost layer
     /// value / 252 (map_server scale / raw maps, Nav2 costmap values); 0 = the layer is ignored
     double costLayerWeight{0.0};
-    /// `turns` (car lattice): arc (the lattice's turns are arcs at R_min) or clothoid (clothoid
-    /// turns within the curvature rate: the searched path's curvature is continuous; its
-    /// full-lock turns are then widened where there is room, widenTurns())
-    std::string turns{"arc"};
+    /// `turns` (car lattice): arc (the lattice's turns are arcs at R_min), clothoid (clothoid
+    /// turns within the curvature rate, of up to 90 degrees each: the searched path's
+    /// curvature is continuous; its full-lock turns are then widened where there is room,
+    /// widenTurns()), or auto: clothoid turns towards a goal position (the heading free: a
+    /// route, driven at speed), arcs towards a goal pose whose heading is to be met and in
+    /// the tight-spot searches (a manoeuvre, where the tightest turns and the Reeds-Shepp
+    /// expansion count more than the steering rate)
+    std::string turns{"auto"};
     /// `shortcut` (car lattice): a found path shortened by the analytic expansion's curves
     /// where they are free, shorter and cheaper (CarLatticeSearch::shortcut()): auto (on when
     /// the lattice reverses), on, off
@@ -191,7 +195,7 @@ public:
     void setCurvatureRate(double rate);
     double costLayerWeight() const { return params_.costLayerWeight; }
     std::string turns() const { return params_.turns; }
-    /// `turns`: arc or clothoid; std::invalid_argument otherwise.
+    /// `turns`: auto, arc or clothoid; std::invalid_argument otherwise.
     void setTurns(const std::string &t);
     /// `cost_layer_weight` in [0, 1000]; std::invalid_argument otherwise.
     void setCostLayerWeight(double w);

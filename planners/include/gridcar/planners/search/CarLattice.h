@@ -37,6 +37,8 @@ struct CarLatticeConfig
     /// curvature 0 up at this rate, an arc of the turning radius if the turn needs it, a
     /// clothoid back to 0), so every primitive starts and ends straight and a path of them has
     /// continuous curvature changing no faster than this; 0: arcs (curvature jumps at each end).
+    /// With clothoid turns the lattice also has turns of 2 up to headings / 4 heading steps
+    /// (90 degrees): a corner of one-step turns would straighten the wheel between them.
     double curvatureRate{0.0};
     bool operator==(const CarLatticeConfig &o) const
     {
