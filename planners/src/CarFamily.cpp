@@ -37,13 +37,13 @@ void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision>
     fineConfig_.spacing = std::min(fineConfig_.spacing, fineConfig_.cell / 2);
 }
 
-FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
-                           bool freeStartHeading, const CarSearchOptions &options, const GoalTarget &goal,
-                           const LatticeCostModel &cost,
-                           const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
+namespace
+{
+/// The lattice query for a start pose, the options and the goal target.
+CarLatticeQuery queryFor(const Pose2 &start, bool freeStartHeading, const CarSearchOptions &options, const GoalTarget &goal)
 {
     CarLatticeQuery q;
-    q.start = toPose(start);
+    q.start = start;
     q.freeStartHeading = freeStartHeading;
     q.weight = options.weight;
     q.reversePenalty = options.reversePenalty;
@@ -71,6 +71,16 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
             q.inGoal = goal.satisfied;
             break;
     }
+    return q;
+}
+}  // namespace
+
+FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
+                           bool freeStartHeading, const CarSearchOptions &options, const GoalTarget &goal,
+                           const LatticeCostModel &cost,
+                           const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
+{
+    const CarLatticeQuery q = queryFor(toPose(start), freeStartHeading, options, goal);
     FamilyRun run;
     const auto t0 = std::chrono::steady_clock::now();
     // a goal heading to meet: the primitive set for manoeuvres, where there is one
