@@ -218,3 +218,64 @@ TEST(CarLatticeSearch, PositionGoalWithAndWithoutHeadingTolerance)
     EXPECT_TRUE(free.isSatisfied(sample.get()));
     EXPECT_THROW(PositionGoal(si, 0, 0, -1), std::invalid_argument);
 }
+
+// A cost model that depends on a motion's shape alone (LatticeCostModel::shapeOnly()) is asked
+// once per primitive, and the search finds the same path and cost as when it is asked for
+// every motion: the lengths and heading changes of a primitive do not depend on where it is.
+TEST(CarLatticeSearch, AShapeOnlyCostIsAskedOncePerPrimitiveAndChangesNothing)
+{
+    struct Counting : LatticeCostModel
+    {
+        bool shape{false};
+        mutable long calls{0};
+        double stepCost(const Pose2 &from, const std::vector<Pose2> &samples, double length, double absTurn) const override
+        {
+            ++calls;
+            // length and heading change, measured on the samples as a time cost would
+            double turn = 0;
+            Pose2 a = from;
+            for (const Pose2 &b : samples) turn += std::abs(wrapAngle(b.yaw - a.yaw)), a = b;
+            return length + 2.0 * turn + 0.0 * absTurn;
+        }
+        bool shapeOnly() const override { return shape; }
+    };
+    int solved = 0;
+    for (unsigned seed = 1; seed <= 3; ++seed)
+    {
+        auto g = randomBlocks(seed);
+        auto field = std::make_shared<DistanceField>(*g);
+        FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
+        for (const bool clothoid : {false, true})
+        {
+            CarLatticeConfig cfg{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()};
+            cfg.reverse = true;
+            if (clothoid) cfg.curvatureRate = fc.vehicle().curvatureRateLimit();
+            CarLatticeSearch search(fc, std::make_shared<const CarLattice>(cfg));
+            std::mt19937 rng(seed * 7 + (clothoid ? 1 : 0));
+            for (int k = 0; k < 4; ++k)
+            {
+                CarLatticeQuery q;
+                q.start = randomFree(fc, rng);
+                q.goal = randomFree(fc, rng);
+                q.goalYawTolerance = 0;
+                Counting each, once;
+                once.shape = true;
+                const CarLatticeResult a = search.run(q, each, [] { return false; });
+                const CarLatticeResult b = search.run(q, once, [] { return false; });
+                ASSERT_EQ(a.exact, b.exact);
+                EXPECT_EQ(a.expanded, b.expanded);
+                EXPECT_NEAR(a.cost, b.cost, 1e-9 * std::max(1.0, a.cost));
+                EXPECT_EQ(a.path.size(), b.path.size());
+                std::size_t prims = 0;
+                for (int h = 0; h < 16; ++h) prims += search.lattice().primitives(h).size();
+                EXPECT_LE(once.calls, long(prims) + 64);  // the analytic expansion's curves besides
+                if (a.exact && a.expanded > 100)
+                {
+                    ++solved;
+                    EXPECT_GT(each.calls, 4 * once.calls);
+                }
+            }
+        }
+    }
+    EXPECT_GE(solved, 6);
+}

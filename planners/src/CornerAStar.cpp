@@ -161,6 +161,7 @@ public:
     {
         return length + p_.turnWeight(absTurn);
     }
+    bool shapeOnly() const override { return true; }
     double minTurnCostPerRad() const override
     {
         // turnWeight() is linear between its table points, so w(x) / x is least at one of them
@@ -204,6 +205,7 @@ public:
         // at least what the heading change costs taken as one smooth corner
         return t + std::max(cornerTimeLost(v_, absTurn), cornerDistanceLost(v_, vLow) / vMax_);
     }
+    bool shapeOnly() const override { return true; }  // lengths and heading changes only
     double minCostPerMetre() const override { return 1.0 / vMax_; }
     double costPerMetreOfPenalty() const override { return 1.0 / vManoeuvre_; }
 

@@ -25,6 +25,9 @@ struct CarExpander
     const LatticeCostModel &cost;
     std::uint64_t expansions{0};
     std::vector<Pose2> samples;  ///< reused for every primitive
+    /// stepCost() per heading and primitive, where the cost model says it depends on the
+    /// primitive's shape alone (NaN: not computed yet)
+    std::vector<std::vector<double>> shapeCost;
 
     Pose2 poseOf(std::uint32_t s) const { return S.statePose(s); }
     CarHeuristic bounds;  ///< the lower bounds (search/CarHeuristics.h); all zero when not aiming
@@ -74,6 +77,25 @@ struct CarExpander
     }
     /// The analytic expansion step: a Dubins curve from the state to the exact goal pose.
     bool analyticExpansion(std::uint32_t s) { return S.query_.shoot && S.query_.aim && S.tryShot(s, cost, expansions); }
+    /// Whether primitiveCost() of primitive @p p of heading @p h is known without its samples.
+    bool known(int h, std::size_t p) const
+    {
+        if (!cost.shapeOnly() || shapeCost.empty()) return false;
+        const std::vector<double> &c = shapeCost[std::size_t(h)];
+        return !c.empty() && !std::isnan(c[p]);
+    }
+    /// The cost model's stepCost() of primitive @p p of heading @p h from @p from (samples
+    /// in `samples`, needed unless known()), once per primitive where it depends on the shape
+    /// alone.
+    double primitiveCost(int h, std::size_t p, const Pose2 &from, const LatticePrimitive &prim)
+    {
+        if (!cost.shapeOnly()) return cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+        if (shapeCost.empty()) shapeCost.resize(std::size_t(S.lattice_->hybrid() ? 1 : S.lattice_->headings()));
+        std::vector<double> &c = shapeCost[std::size_t(h)];
+        if (c.empty()) c.assign(S.lattice_->primitives(h).size(), std::numeric_limits<double>::quiet_NaN());
+        if (std::isnan(c[p])) c[p] = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+        return c[p];
+    }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit)
     {
@@ -100,15 +122,23 @@ struct CarExpander
                 if (ni == k.i && nj == k.j && nh == k.h) continue;  // still in its own bin
             }
             if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
-            S.worldSamples(at, prim, samples);
-            double step = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
-            step += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
+            // the samples are made only where the cost needs them or the motion is checked
+            const bool layered = S.query_.layer && S.query_.layerWeight > 0;
+            bool sampled = false;
+            if (layered || !known(hybrid ? 0 : k.h, p))
+            {
+                S.worldSamples(at, prim, samples);
+                sampled = true;
+            }
+            double step = primitiveCost(hybrid ? 0 : k.h, p, from, prim);
+            if (layered) step += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
             const std::int8_t gear = prim.reverse ? -1 : 1;
             if (prim.reverse != S.query_.timeReversed) step *= S.query_.reversePenalty;  // driven backwards
             if (S.gear_[s] != 0 && S.gear_[s] != gear) step += S.query_.cuspPenalty;  // a gear change
             // a motion to a state it would not improve is dropped by the search: not checked
             const std::uint32_t seen = S.known(ni, nj, nh);
             if (seen != StateInterner::kNone && !(gs + step < S.space_.g(seen))) continue;
+            if (!sampled) S.worldSamples(at, prim, samples);
             if (!S.motionFree(from, samples)) continue;
             const double hn = hAt(end, ni, nj);
             if (hn == kInf) continue;

@@ -42,6 +42,10 @@ public:
     /// The cost of a metre where a length (the cusp penalty, metres of the gear change) is
     /// turned into this model's units. Default 1 (costs in metres).
     virtual double costPerMetreOfPenalty() const { return 1.0; }
+    /// True if stepCost() depends on the motion's shape alone (its lengths and heading changes
+    /// from @p from on), not on where the motion is or which way it points: the search then
+    /// computes it once per primitive.
+    virtual bool shapeOnly() const { return false; }
     /// Paper I's evaluation: order the open list by priority() instead of g + h.
     virtual bool customPriority() const { return false; }
     virtual double priority(double g, double h, const Pose2 &at) const { (void)at; return g + h; }
@@ -52,6 +56,7 @@ class LengthCost : public LatticeCostModel
 {
 public:
     double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double) const override { return length; }
+    bool shapeOnly() const override { return true; }
 };
 
 /// One query on the car lattice, in world terms.
