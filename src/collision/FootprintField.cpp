@@ -172,12 +172,23 @@ const FootprintChecker::Body &FootprintChecker::bodyFor(double margin) const
 std::vector<std::array<double, 2>> FootprintChecker::inscribedDiscOffsets(double yaw) const
 {
     std::vector<std::array<double, 2>> out;
-    if (vehicle_.isPoint()) return {{0.0, 0.0}};
+    discOffsetsInto(yaw, out);
+    return out;
+}
+
+void FootprintChecker::discOffsetsInto(double yaw, std::vector<std::array<double, 2>> &out) const
+{
+    out.clear();
+    if (vehicle_.isPoint())
+    {
+        out.push_back({0.0, 0.0});
+        return;
+    }
     const double cs = std::cos(yaw), sn = std::sin(yaw);
     if (vehicle_.hasPolygon())
     {
         for (const auto &d : provenDiscs_) out.push_back({cs * d[0] - sn * d[1], sn * d[0] + cs * d[1]});
-        return out;
+        return;
     }
     const double L = vehicle_.length, W = vehicle_.width, rear = vehicle_.rearOverhang;
     const double r = std::min(L, W) / 2;
@@ -194,7 +205,6 @@ std::vector<std::array<double, 2>> FootprintChecker::inscribedDiscOffsets(double
             by = -W / 2 + r + t * span;
         out.push_back({cs * bx - sn * by, sn * bx + cs * by});
     }
-    return out;
 }
 
 bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets) const
@@ -213,7 +223,9 @@ bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std
 bool FootprintChecker::provenBlocked(const Pose2 &p) const
 {
     if (!std::isfinite(p.yaw)) return true;
-    return provenBlockedAt(p.x, p.y, inscribedDiscOffsets(p.yaw));
+    thread_local std::vector<std::array<double, 2>> offsets;  // the search asks for millions: no allocation each
+    discOffsetsInto(p.yaw, offsets);
+    return provenBlockedAt(p.x, p.y, offsets);
 }
 
 double FootprintChecker::freeSlack(const Pose2 &p) const

@@ -175,6 +175,8 @@ private:
     };
     static Body makeBody(const VehicleParams &v, double margin);
     const Body &bodyFor(double margin) const;
+    /// inscribedDiscOffsets() into @p out (cleared first).
+    void discOffsetsInto(double yaw, std::vector<std::array<double, 2>> &out) const;
     bool validBody(const Body &b, double x, double y, double yaw) const;
     /// 1 proven free, 0 proven blocked, -1 undecided by the distance field.
     int quickBody(const Body &b, double x, double y, double yaw, double cs, double sn) const;
