@@ -21,7 +21,7 @@ void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision>
     const bool same = collision == collision_ && search_ && search_->lattice().config() == cfg;
     const bool sameFallback = fallback ? fallback_ && fallback_->lattice().config() == *fallback : !fallback_;
     const bool samePoses = forPoses ? forPoses_ && forPoses_->lattice().config() == *forPoses : !forPoses_;
-    if (same && sameFallback && samePoses && collision == collision_) return;
+    if (same && sameFallback && samePoses) return;
     collision_ = std::move(collision);
     if (!same) search_ = std::make_unique<CarLatticeSearch>(collision_, std::make_shared<const CarLattice>(cfg));
     forPoses_.reset();

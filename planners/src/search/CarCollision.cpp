@@ -48,7 +48,7 @@ bool FootprintCollision::curveFree(const Pose2 &from, int n, const std::function
     {
         const Pose2 p = poseAt(i);
         const double slack = c_.freeSlack(p);
-        if (slack >= grown)
+        if (slack > grown)
         {
             i += int(std::min(reach(slack), double(n - i)));
             continue;

@@ -77,24 +77,15 @@ struct CarExpander
     }
     /// The analytic expansion step: a Dubins curve from the state to the exact goal pose.
     bool analyticExpansion(std::uint32_t s) { return S.query_.shoot && S.query_.aim && S.tryShot(s, cost, expansions); }
-    /// Whether primitiveCost() of primitive @p p of heading @p h is known without its samples.
-    bool known(int h, std::size_t p) const
+    /// The cached stepCost() of primitive @p p of heading @p h (NaN until computed), or null
+    /// where the cost model's stepCost() depends on more than the primitive's shape.
+    double *shapeSlot(int h, std::size_t p)
     {
-        if (!cost.shapeOnly() || shapeCost.empty()) return false;
-        const std::vector<double> &c = shapeCost[std::size_t(h)];
-        return !c.empty() && !std::isnan(c[p]);
-    }
-    /// The cost model's stepCost() of primitive @p p of heading @p h from @p from (samples
-    /// in `samples`, needed unless known()), once per primitive where it depends on the shape
-    /// alone.
-    double primitiveCost(int h, std::size_t p, const Pose2 &from, const LatticePrimitive &prim)
-    {
-        if (!cost.shapeOnly()) return cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+        if (!cost.shapeOnly()) return nullptr;
         if (shapeCost.empty()) shapeCost.resize(std::size_t(S.lattice_->hybrid() ? 1 : S.lattice_->headings()));
         std::vector<double> &c = shapeCost[std::size_t(h)];
         if (c.empty()) c.assign(S.lattice_->primitives(h).size(), std::numeric_limits<double>::quiet_NaN());
-        if (std::isnan(c[p])) c[p] = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
-        return c[p];
+        return &c[p];
     }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit)
@@ -106,6 +97,7 @@ struct CarExpander
         const bool hybrid = S.lattice_->hybrid();
         const double c = S.lattice_->cell(), ca = std::cos(at.yaw), sa = std::sin(at.yaw);
         const double gs = S.space_.g(s);
+        const bool layered = S.query_.layer && S.query_.layerWeight > 0;
         for (std::size_t p = 0; p < prims.size(); ++p)
         {
             const LatticePrimitive &prim = prims[p];
@@ -123,14 +115,11 @@ struct CarExpander
             }
             if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
             // the samples are made only where the cost needs them or the motion is checked
-            const bool layered = S.query_.layer && S.query_.layerWeight > 0;
-            bool sampled = false;
-            if (layered || !known(hybrid ? 0 : k.h, p))
-            {
-                S.worldSamples(at, prim, samples);
-                sampled = true;
-            }
-            double step = primitiveCost(hybrid ? 0 : k.h, p, from, prim);
+            double *cached = shapeSlot(hybrid ? 0 : k.h, p);
+            const bool sampled = layered || !cached || std::isnan(*cached);
+            if (sampled) S.worldSamples(at, prim, samples);
+            if (cached && std::isnan(*cached)) *cached = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+            double step = cached ? *cached : cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
             if (layered) step += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
             const std::int8_t gear = prim.reverse ? -1 : 1;
             if (prim.reverse != S.query_.timeReversed) step *= S.query_.reversePenalty;  // driven backwards
