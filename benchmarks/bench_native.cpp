@@ -133,6 +133,7 @@ struct Options
     double bitstarTime{10.0};
     int campusPairs{20};
     std::vector<int> only;  ///< indices into kPlanners (empty: all)
+    bool goalYaw{false};    ///< the goal's yaw is part of the query (a pose to arrive at)
     std::vector<std::string> params;  ///< NAME=VALUE for every car-lattice planner
 };
 
@@ -151,9 +152,10 @@ std::string labelOf(const std::string &name, const PlannerParams &p)
 
 /// One query of @p planner; fills @p row.
 QueryResult runOne(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &s, const Pose2 &t,
-                   double limit, Row &row)
+                   double limit, bool goalYaw, Row &row)
 {
-    QueryResult r = runQuery(setup, planner, s, t, limit, /*freeGoalHeading=*/true);  // the pairs have no goal yaw
+    // the pairs have no goal yaw unless --goal-yaw gives them the one they fit at
+    QueryResult r = runQuery(setup, planner, s, t, limit, /*freeGoalHeading=*/!goalYaw);
     ++row.runs;
     row.times.push_back(r.seconds);
     if (r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)
@@ -195,7 +197,7 @@ void nativeMap(const Options &o)
             for (std::size_t k = 0; k < pairs.size(); ++k)
             {
                 const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), t = withFittingYaw(*setup.checker, pairs[k].second);
-                const QueryResult r = runOne(setup, planner, s, t, o.limit, row);
+                const QueryResult r = runOne(setup, planner, s, t, o.limit, o.goalYaw, row);
                 std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f -> %.2f,%.2f): %s %.3f s %s\n", row.label.c_str(), k, s.x, s.y, t.x,
                              t.y, r.status.asString().c_str(), r.seconds,
                              r.drivability.drivable ? "drivable" : r.drivability.reason.c_str());
@@ -262,7 +264,7 @@ void campus(const Options &o)
         auto planner = configurePlanner(setup.ss->getSpaceInformation(), {name, params, true, false});
         Row row{labelOf(name, params)};
         for (const auto &[s0, t0] : pairs)
-            runOne(setup, planner, withFittingYaw(*setup.checker, s0), withFittingYaw(*setup.checker, t0), o.limit, row);
+            runOne(setup, planner, withFittingYaw(*setup.checker, s0), withFittingYaw(*setup.checker, t0), o.limit, false, row);
         rows.push_back(row);
     }
     std::printf("\n### embedded campus (0.298 m), paper-i, %zu pairs 20-150 m\n\n", pairs.size());
@@ -289,6 +291,9 @@ int main(int argc, char **argv)
     app.add_option("--campus-pairs", o.campusPairs, "pairs on the embedded campus (0: skip)")->capture_default_str();
     app.add_option("--param", o.params, "NAME=VALUE set on every planner of the native-map runs (repeatable)");
     app.add_option("--only", o.only, "planner indices to run: 0 improved-astar paper, 1 integral, 2 corner-astar");
+    app.add_flag("--goal-yaw", o.goalYaw,
+                 "native-map pairs: the goal is a pose, arrived at with the yaw the car fits at there (default: a "
+                 "position, any heading)");
     CLI11_PARSE(app, argc, argv);
     try
     {

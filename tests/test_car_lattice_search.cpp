@@ -5,6 +5,7 @@
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/map/CampusGenerator.h"
+#include "gridcar/map/ParkingScenes.h"
 #include "gridcar/path/Cusps.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/sim/Simulation.h"
@@ -278,4 +279,53 @@ TEST(CarLatticeSearch, AShapeOnlyCostIsAskedOncePerPrimitiveAndChangesNothing)
         }
     }
     EXPECT_GE(solved, 6);
+}
+
+// The curve bound read from the lattice's CurveTable (CarLatticeQuery::curveTable) on paper I's
+// car's perpendicular-parking and parking-lot queries (goal poses, reversing): every query is
+// solved, the table is read (and kept: a second run computes nothing new), and the searches
+// expand fewer states in all than without a curve bound.
+TEST(CarLatticeSearch, TheCurveTableBoundCutsExpansionsOnParkingQueries)
+{
+    const VehicleParams v = VehicleParams::preset("paper-i");
+    std::uint64_t off = 0, fromTable = 0;
+    int queries = 0;
+    for (const ParkingScene &scene : parkingScenes(v))
+    {
+        if (scene.name != "perpendicular" && scene.name != "lot") continue;
+        auto g = std::make_shared<const OccupancyGrid>(scene.grid);
+        auto field = std::make_shared<DistanceField>(*g);
+        FootprintChecker fc(g, field, v);
+        CarLatticeConfig cfg{0.3, 16, 1.01 * v.minTurningRadius(), 0.05, fc.reach()};
+        cfg.reverse = true;
+        auto lattice = std::make_shared<const CarLattice>(cfg);
+        CarLatticeSearch search(fc, lattice);
+        for (const ParkingQuery &pq : scene.queries)
+        {
+            CarLatticeQuery q;
+            q.start = pq.start;
+            q.goal = pq.goal;
+            q.goalYawTolerance = 0;
+            q.reversePenalty = 2.0;
+            q.cuspPenalty = 2.0;
+            LengthCost cost;
+            const CarLatticeResult a = search.run(q, cost, [] { return false; });
+            q.curveWithin = 10 * cfg.turnRadius;
+            q.curveTable = true;
+            const CarLatticeResult b = search.run(q, cost, [] { return false; });
+            ASSERT_TRUE(a.exact && b.exact) << pq.name;
+            const std::size_t kept = search.curveTable()->computed();
+            EXPECT_GT(kept, 0u) << pq.name;
+            const CarLatticeResult again = search.run(q, cost, [] { return false; });
+            EXPECT_EQ(search.curveTable()->computed(), kept) << pq.name;  // read what the first run computed
+            EXPECT_EQ(again.cost, b.cost) << pq.name;
+            off += a.expanded;
+            fromTable += b.expanded;
+            ++queries;
+        }
+    }
+    EXPECT_EQ(queries, 8);
+    EXPECT_LT(fromTable, off);
+    std::printf("paper I's car, perpendicular and lot queries: %llu expansions without a curve bound, %llu with the table\n",
+                static_cast<unsigned long long>(off), static_cast<unsigned long long>(fromTable));
 }

@@ -237,3 +237,34 @@ TEST(Reversing, TheSimulationDrivesEachPieceInItsGear)
     v.maxReverseSpeed = -1;
     EXPECT_THROW(v.validate(), std::invalid_argument);
 }
+
+// The curve heuristic (`curve_heuristic`): read from the lattice's table or computed exactly,
+// every perpendicular-parking query is still solved exactly, drivable, at the goal pose; the
+// parameter takes off / table / exact (0 and 1 as before) and nothing else.
+TEST(Reversing, TheCurveHeuristicFromItsTableOrExactKeepsEveryParkingQuerySolved)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    for (const std::string mode : {"table", "exact"})
+        for (const std::string name :
+             {"perpendicular/park-forwards", "perpendicular/back-in", "perpendicular/leave-nose-in",
+              "perpendicular/leave-backed-in"})
+        {
+            ParkingQuery q;
+            GridSetup s = test::parkingSetup("paper-c-car", "perpendicular", q, name);
+            auto p = makePlanner(s.ss->getSpaceInformation(), "corner-astar");
+            p->params().setParam("reverse", "on");
+            ASSERT_TRUE(p->params().setParam("curve_heuristic", mode));
+            const QueryResult r = runQuery(s, p, q.start, q.goal, 5.0);
+            ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION) << mode << " " << name;
+            EXPECT_LT(test::poseError(r.path.back(), q.goal), 1e-6) << mode << " " << name;
+            EXPECT_TRUE(r.drivability.drivable) << mode << " " << name << ": " << r.drivability.reason;
+        }
+    GridSetup s = makeGridSetup(deadEnd(), VehicleParams::preset("paper-i"));
+    auto planner = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
+    EXPECT_EQ(planner->curveHeuristic(), "off");
+    planner->setCurveHeuristic("1");
+    EXPECT_EQ(planner->curveHeuristic(), "exact");
+    planner->setCurveHeuristic("0");
+    EXPECT_EQ(planner->curveHeuristic(), "off");
+    EXPECT_THROW(planner->setCurveHeuristic("sometimes"), std::invalid_argument);
+}

@@ -49,6 +49,7 @@ CarLatticeQuery queryFor(const Pose2 &start, bool freeStartHeading, const CarSea
     q.reversePenalty = options.reversePenalty;
     q.cuspPenalty = options.cuspPenalty;
     q.curveWithin = options.curveWithin;
+    q.curveTable = options.curveTable;
     q.layer = options.layer;
     q.layerWeight = options.layerWeight;
     q.goal = goal.pose;

@@ -154,8 +154,8 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
         const std::unique_ptr<LatticeCostModel> cost = carCost();
         CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty,
                                  cuspPenalty() * cost->costPerMetreOfPenalty(),
-                                 params_.curveHeuristic ? 30.0 * carSearch()->lattice().config().turnRadius : 0.0,
-                                 curvatureRate(), 1.0 / turningRadius()};
+                                 curveWithin(), params_.curveHeuristic == "table", curvatureRate(),
+                                 1.0 / turningRadius()};
         options.shortcutCurves = shortcutting() ? kShortcutCurves : 0;
         if (params_.costLayerWeight > 0)
         {

@@ -23,7 +23,8 @@ void GridPlanner::declareCarLatticeParams()
     declareParam<double>("reverse_penalty", this, &GridPlanner::setReversePenalty, &GridPlanner::reversePenalty,
                          "1.:0.5:10.");
     declareParam<double>("cusp_penalty", this, &GridPlanner::setCuspPenalty, &GridPlanner::cuspPenalty, "0.:1.:100.");
-    declareParam<bool>("curve_heuristic", this, &GridPlanner::setCurveHeuristic, &GridPlanner::curveHeuristic, "0,1");
+    declareParam<std::string>("curve_heuristic", this, &GridPlanner::setCurveHeuristic, &GridPlanner::curveHeuristic,
+                              "off,table,exact");
     declareParam<std::string>("primitives", this, &GridPlanner::setPrimitives, &GridPlanner::primitives, "auto,lattice,hybrid");
     declareParam<bool>("continuous_curvature", this, &GridPlanner::setContinuousCurvature, &GridPlanner::continuousCurvature,
                        "0,1");
@@ -87,10 +88,24 @@ bool GridPlanner::matchGoalHeading() const
     return setParams_.count("match_goal_heading") ? params_.matchGoalHeading : usesCarLattice();
 }
 
-void GridPlanner::setCurveHeuristic(bool on)
+void GridPlanner::setCurveHeuristic(const std::string &mode)
 {
-    params_.curveHeuristic = on;
+    // 0 and 1 as before the table existed: off, and the exact bound
+    const std::string m = mode == "0" ? "off" : mode == "1" ? "exact" : mode;
+    if (m != "off" && m != "table" && m != "exact")
+        throw std::invalid_argument(getName() + ": curve_heuristic must be off, table or exact, got '" + printable(mode) +
+                                    "'");
+    params_.curveHeuristic = m;
     parameterSet("curve_heuristic");
+}
+
+double GridPlanner::curveWithin() const
+{
+    const CarLatticeSearch *search = carSearch();
+    if (!search) return 0.0;
+    const double R = search->lattice().config().turnRadius;
+    // the table covers nodes within 10 R per axis of the goal's; exact, within 30 R of it
+    return params_.curveHeuristic == "table" ? 10.0 * R : params_.curveHeuristic == "exact" ? 30.0 * R : 0.0;
 }
 
 void GridPlanner::setPrimitives(const std::string &p)

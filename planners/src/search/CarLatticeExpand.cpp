@@ -5,6 +5,7 @@
 
 #include "gridcar/core/Angles.h"
 #include "gridcar/planners/search/CarHeuristics.h"
+#include "gridcar/planners/search/CurveTable.h"
 
 #include <atomic>
 #include <algorithm>
@@ -31,6 +32,7 @@ struct CarExpander
 
     Pose2 poseOf(std::uint32_t s) const { return S.statePose(s); }
     CarHeuristic bounds;  ///< the lower bounds (search/CarHeuristics.h); all zero when not aiming
+    CurveTableBound table;  ///< the curve bound read from the lattice's CurveTable (inactive: not asked for)
 
     CarExpander(CarLatticeSearch &search, const LatticeCostModel &c) : S(search), cost(c)
     {
@@ -47,7 +49,10 @@ struct CarExpander
         if (S.query_.goalYawTolerance == 0 && S.query_.shoot && S.query_.curveWithin > 0)
         {
             const double R = S.lattice_->config().turnRadius;
-            bounds.curve = {S.query_.goal, R, S.lattice_->config().reverse, cost.minCostPerMetre(), S.query_.curveWithin};
+            if (!S.query_.curveTable)
+                bounds.curve = {S.query_.goal, R, S.lattice_->config().reverse, cost.minCostPerMetre(), S.query_.curveWithin};
+            else if (const CurveTable *t = S.curveTable())
+                table = CurveTableBound(*t, S.latticePose(S.query_.goal));
         }
         bounds.useObstacle = S.use2d_;
         bounds.weight = S.query_.weight;
@@ -57,18 +62,20 @@ struct CarExpander
         if (!S.query_.aim) return 0.0;
         return bounds.position(S.nodePose(i, j, 0), S.use2d_ ? S.h2d_->distance(i, j) : -1.0);
     }
-    /// The heuristic at lattice-frame pose @p lat of node (i, j) (a node's pose, or a hybrid state's).
-    double hAt(const Pose2 &lat, int i, int j) const
+    /// The heuristic at lattice-frame pose @p lat of node (i, j) at heading h (a node's pose, or
+    /// a hybrid state's).
+    double hAt(const Pose2 &lat, int i, int j, int h) const
     {
         if (!S.query_.aim) return 0.0;
         const Pose2 p = S.worldPose(lat);
-        const double hp = bounds.position(p, S.use2d_ ? S.h2d_->distance(i, j) : -1.0);
+        const double tb = table.active() ? cost.minCostPerMetre() * table(i, j, h) : 0.0;
+        const double hp = bounds.position(p, S.use2d_ ? S.h2d_->distance(i, j) : -1.0, tb);
         return hp == kInf ? hp : hp + bounds.turning(p);
     }
     double heuristic(std::uint32_t s) const
     {
         const auto k = S.unpack(S.states_.key(s));
-        return hAt(S.pose_[s], k.i, k.j);
+        return hAt(S.pose_[s], k.i, k.j, k.h);
     }
     bool isGoal(std::uint32_t s)
     {
@@ -129,7 +136,7 @@ struct CarExpander
             if (seen != StateInterner::kNone && !(gs + step < S.space_.g(seen))) continue;
             if (!sampled) S.worldSamples(at, prim, samples);
             if (!S.motionFree(from, samples)) continue;
-            const double hn = hAt(end, ni, nj);
+            const double hn = hAt(end, ni, nj, nh);
             if (hn == kInf) continue;
             const std::uint32_t id = seen != StateInterner::kNone ? seen : S.intern(ni, nj, nh);
             emit(id, step, [this, id, p, hn, gear, end] {

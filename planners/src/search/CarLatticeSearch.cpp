@@ -198,6 +198,24 @@ bool CarLatticeSearch::fitsAtNode(int i, int j) const
     return col_->mayStandAt(p.x, p.y);
 }
 
+const CurveTable *CarLatticeSearch::curveTable()
+{
+    if (lattice_->hybrid() || !(query_.curveWithin > 0)) return nullptr;
+    // at most 4 Mi entries (16 MB; 16 headings: 127 cells each way), however fine the cells
+    const int h = lattice_->headings();
+    const int most = int((std::sqrt(double(std::size_t(4) << 20) / (h * std::max(1, h / 4))) - 1) / 2);
+    const int span = std::min(most, std::max(1, int(std::ceil(query_.curveWithin / lattice_->cell()))));
+    if (!curveTable_ || curveTable_->span() != span)
+        curveTable_ = std::make_unique<CurveTable>(*lattice_, span * lattice_->cell());
+    return curveTable_.get();
+}
+
+Pose2 CarLatticeSearch::latticePose(const Pose2 &w) const
+{
+    const double dx = w.x - ox_, dy = w.y - oy_;
+    return {cphi_ * dx + sphi_ * dy, -sphi_ * dx + cphi_ * dy, wrapYaw(w.yaw - phi_)};
+}
+
 void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
 {
     query_ = q;

@@ -24,6 +24,7 @@ struct CarSearchOptions
     double reversePenalty{1.0};  ///< factor on reversed cost, >= 1
     double cuspPenalty{0.0};     ///< cost of a gear change
     double curveWithin{0.0};     ///< m: the Reeds-Shepp / Dubins bound within this of the goal (0: off)
+    bool curveTable{false};      ///< that bound read from the lattice's CurveTable (CarLatticeQuery::curveTable)
     /// Continuous curvature: a found path's curvature jumps replaced (smoothCurvature()) so
     /// that curvature changes no faster than this (1/m^2; 0: the path as searched)
     double curvatureRate{0.0};

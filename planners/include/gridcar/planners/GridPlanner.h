@@ -38,7 +38,9 @@ struct GridPlannerParams
     std::string reverse{"off"};      ///< `reverse` (car lattice): off, on, auto (on but on a Dubins space)
     double reversePenalty{2.0};      ///< `reverse_penalty` (car lattice): factor on reversed cost, >= 1
     double cuspPenalty{0.0};         ///< `cusp_penalty` (car lattice), m; used when set, else from the vehicle
-    bool curveHeuristic{false};      ///< `curve_heuristic` (car lattice): max in the Reeds-Shepp / Dubins length to the goal pose
+    /// `curve_heuristic` (car lattice): off, table or exact: max in the Reeds-Shepp / Dubins
+    /// length to the goal pose, read from a CurveTable or computed at every state
+    std::string curveHeuristic{"off"};
     std::string primitives{"auto"};  ///< `primitives` (car lattice): auto, lattice, or hybrid (Hybrid A*'s binned poses)
     /// `continuous_curvature` (car lattice): the found path's curvature jumps replaced by G2
     /// quintics within `curvature_rate` (smoothCurvature())
@@ -173,13 +175,18 @@ public:
     /// CarLatticeConfig and CarFamily.
     std::string primitives() const { return params_.primitives; }
     void setPrimitives(const std::string &p);
-    /// `curve_heuristic`: the heuristic also takes the length of the shortest Reeds-Shepp
-    /// (reversing) or Dubins curve to a goal pose whose heading must be matched, within 30 R_min
-    /// (CurveBound, the obstacle-free non-holonomic bound of Hybrid A*). Off by default: on the
-    /// parking suite it saved 0-8 % of the expansions and cost 1.7-2.5 x the time
-    /// (docs/performance.md).
-    bool curveHeuristic() const { return params_.curveHeuristic; }
-    void setCurveHeuristic(bool on);
+    /// `curve_heuristic`: `off`, `table` or `exact` (0 and 1: off and exact). The heuristic
+    /// also takes the length of the shortest Reeds-Shepp (reversing) or Dubins curve to a goal
+    /// pose whose heading must be matched (the obstacle-free non-holonomic bound of Hybrid A*):
+    /// `table` reads it from the lattice's CurveTable (node offsets within 10 R_min per axis,
+    /// kept across queries; a lower bound through the goal's nearest nodes, CurveTableBound;
+    /// none in the hybrid fallback), `exact` computes it at every state within 30 R_min
+    /// (CurveBound). See docs/planners.md for what each measured; std::invalid_argument
+    /// for any other value.
+    std::string curveHeuristic() const { return params_.curveHeuristic; }
+    void setCurveHeuristic(const std::string &mode);
+    /// The range the curve heuristic covers (m; 0: off, or no car lattice set up).
+    double curveWithin() const;
     bool continuousCurvature() const { return params_.continuousCurvature; }
     void setContinuousCurvature(bool on);
     /// `shortcut`: a found path's stretches replaced by free, shorter and cheaper curves of the

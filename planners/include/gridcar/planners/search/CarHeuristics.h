@@ -101,14 +101,15 @@ struct CarHeuristic
     TurnBound turn;
     bool useObstacle{true};
     double weight{1.0};
-    /// The position part at node pose @p p with 2D distance @p graphDistance.
-    double position(const Pose2 &p, double graphDistance) const
+    /// The position part at node pose @p p with 2D distance @p graphDistance; @p other: a
+    /// further lower bound of the same term (a CurveTableBound's, in the cost model's units).
+    double position(const Pose2 &p, double graphDistance, double other = 0.0) const
     {
-        if (!useObstacle) return weight * std::max(euclidean.perMetre * euclidean.distance(p), curve(p));
+        if (!useObstacle) return weight * std::max({euclidean.perMetre * euclidean.distance(p), curve(p), other});
         const double e = euclidean(p);
         const double g = obstacle(graphDistance);
         if (g == std::numeric_limits<double>::infinity()) return g;
-        return weight * std::max({e, g, curve(p)});
+        return weight * std::max({e, g, curve(p), other});
     }
     double turning(const Pose2 &p) const { return turn.perRad <= 0 ? 0.0 : weight * turn.perRad * turn.angle(p); }
 };

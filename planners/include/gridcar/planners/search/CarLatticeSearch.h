@@ -8,6 +8,7 @@
 #include "gridcar/planners/search/AStar.h"
 #include "gridcar/planners/search/CarCollision.h"
 #include "gridcar/planners/search/CarLattice.h"
+#include "gridcar/planners/search/CurveTable.h"
 #include "gridcar/planners/search/ObstacleHeuristic.h"
 #include "gridcar/planners/search/detail/StateInterner.h"
 
@@ -91,6 +92,10 @@ struct CarLatticeQuery
     /// Within this many metres of a goal whose heading must be matched, the heuristic also
     /// takes the Reeds-Shepp (reversing) or Dubins length to the goal pose (CurveBound); 0: not.
     double curveWithin{0.0};
+    /// That length read from the lattice's CurveTable (nodes within curveWithin per axis of the
+    /// reference nodes round the goal; the table kept across runs) instead of computed at
+    /// every state; a hybrid lattice (whose states are not nodes) then has no curve bound.
+    bool curveTable{false};
     /// The map's cost layer (OccupancyGrid::cost(), 0..252) and its weight: a motion costs
     /// layerWeight x (mean cost of its poses / 252) x its length more, in metres converted by
     /// the cost model (costPerMetreOfPenalty()). Null or 0: the layer is not used.
@@ -174,6 +179,11 @@ public:
 
     /// The heuristic of the last run() at a node of its lattice at heading h (world pose out).
     double heuristicAt(int i, int j);
+    /// The lattice's CurveTable for the running query's curveWithin, at most 4 Mi entries
+    /// (built on first use and kept while the range stays; null on a hybrid lattice).
+    const CurveTable *curveTable();
+    /// A world pose in the last run()'s lattice frame.
+    Pose2 latticePose(const Pose2 &world) const;
     /// World pose of lattice node (i, j) at heading h in the last run()'s frame.
     Pose2 nodePose(int i, int j, int h) const;
     /// World pose of a state of the last run() (yaw wrapped): its node's, or on a hybrid lattice
@@ -280,6 +290,7 @@ private:
     std::vector<Pose2> shot_;
     double shotCost_{0};
     int shotsTried_{0};
+    std::unique_ptr<CurveTable> curveTable_;  ///< kept across runs (curveTable())
     std::unique_ptr<ClothoidTurn> clothoid_;  ///< the lattice's turns, for clothoidShot() (null: arcs or reversing)
     const std::function<bool()> *cancelled_{nullptr};  ///< the running query's (run())
 };
