@@ -198,8 +198,9 @@ void nativeMap(const Options &o)
             {
                 const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), t = withFittingYaw(*setup.checker, pairs[k].second);
                 const QueryResult r = runOne(setup, planner, s, t, o.limit, o.goalYaw, row);
-                std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f -> %.2f,%.2f): %s %.3f s %s\n", row.label.c_str(), k, s.x, s.y, t.x,
-                             t.y, r.status.asString().c_str(), r.seconds,
+                std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f -> %.2f,%.2f): %s %.3f s, %llu expansions, %s\n", row.label.c_str(),
+                             k, s.x, s.y, t.x, t.y, r.status.asString().c_str(), r.seconds,
+                             static_cast<unsigned long long>(r.expanded),
                              r.drivability.drivable ? "drivable" : r.drivability.reason.c_str());
                 if (name == "improved-astar" && params[0].second == "integral" && int(k) < o.bitstarPairs && !r.path.empty() &&
                     r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)
