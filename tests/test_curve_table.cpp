@@ -88,6 +88,22 @@ TEST(CurveTable, FillComputesEveryEntryOnceAndBeyondTheSpanIsNoValue)
     EXPECT_EQ(table.distance(0, 0, 2, 2), 0.0);
 }
 
+// A range of a whole number of cells is that many cells, however span x cell rounds (0.45 x 89
+// / 0.45 is above 89 in doubles): the search builds its table so and keeps it while the span
+// stays; a table one cell wider each time was rebuilt at every run.
+TEST(CurveTable, ARangeOfWholeCellsIsThatManyCells)
+{
+    for (double cell : {0.05, 0.3, 0.45})
+    {
+        CarLatticeConfig c = config(true, 8);
+        c.cell = cell;
+        const CarLattice lattice(c);
+        for (int span = 1; span <= 120; ++span)
+            ASSERT_EQ(CurveTable(lattice, span * cell).span(), span) << "cell " << cell;
+        EXPECT_EQ(CurveTable(lattice, 2.5 * cell).span(), 3);
+    }
+}
+
 TEST(CurveTable, RefusesAHybridLatticeAndAnAbsurdRange)
 {
     CarLatticeConfig h = config(true);

@@ -205,7 +205,7 @@ const CurveTable *CarLatticeSearch::curveTable()
     const int h = lattice_->headings();
     const int most = int((std::sqrt(double(std::size_t(4) << 20) / (h * std::max(1, h / 4))) - 1) / 2);
     const int span = std::min(most, std::max(1, int(std::ceil(query_.curveWithin / lattice_->cell()))));
-    if (!curveTable_ || curveTable_->span() != span)
+    if (!curveTable_ || curveTable_->span() != span)  // kept while the span stays
         curveTable_ = std::make_unique<CurveTable>(*lattice_, span * lattice_->cell());
     return curveTable_.get();
 }

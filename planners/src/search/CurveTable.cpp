@@ -19,14 +19,14 @@ namespace
 {
 constexpr std::size_t kMaxEntries = std::size_t(64) << 20;
 
-/// The curve length from @p a to @p b, less a rounding allowance, so that it stays below the
-/// true length (0 for an empty curve: no bound).
-double curveLength(const Pose2 &a, const Pose2 &b, double radius, bool reverse)
+/// The shortest Reeds-Shepp (@p reverse) or Dubins curve from @p a to @p b.
+CarCurve shortest(const Pose2 &a, const Pose2 &b, double radius, bool reverse)
 {
-    const CarCurve c = reverse ? reedsSheppCurve(a, b, radius) : dubinsCurve(a, b, radius);
-    if (c.empty()) return 0.0;
-    return std::max(0.0, c.length - 1e-9 * (1.0 + c.length));
+    return reverse ? reedsSheppCurve(a, b, radius) : dubinsCurve(a, b, radius);
 }
+
+/// A rounding allowance on a curve length of @p len metres.
+double allowance(double len) { return 1e-9 * (1.0 + len); }
 }  // namespace
 
 CurveTable::CurveTable(const CarLattice &lattice, double range)
@@ -40,7 +40,8 @@ CurveTable::CurveTable(const CarLattice &lattice, double range)
         throw std::invalid_argument("CurveTable: a hybrid lattice's states are not nodes; the table needs a node lattice");
     if (!std::isfinite(range) || !(range > 0))
         throw std::invalid_argument("CurveTable: range must be finite and > 0 m, got " + std::to_string(range));
-    span_ = std::max(1, int(std::ceil(range / cell_)));
+    // a range of a whole number of cells is that many (span x cell / cell may round above it)
+    span_ = std::max(1, int(std::ceil(range / cell_ - 1e-9)));
     for (int h = 0; h < headings_; ++h) yaw_.push_back(lattice.yaw(h));
     // a quarter turn maps the square grid to itself; it maps the headings too when heading
     // h + headings/4 is heading h turned by 90 degrees (true of the lattice-vector headings)
@@ -72,7 +73,9 @@ std::size_t CurveTable::index(int di, int dj, int hs, int hg) const
 
 double CurveTable::compute(int di, int dj, int hs, int hg) const
 {
-    return curveLength(node(di, dj, hs), node(0, 0, hg), radius_, reverse_);
+    // less the rounding allowance, so that it stays below the true length (0: no curve, no bound)
+    const CarCurve c = shortest(node(di, dj, hs), node(0, 0, hg), radius_, reverse_);
+    return c.empty() ? 0.0 : std::max(0.0, c.length - allowance(c.length));
 }
 
 double CurveTable::distance(int di, int dj, int hs, int hg) const
@@ -109,7 +112,7 @@ void CurveTable::fill() const
 
 CurveTableBound::CurveTableBound(const CurveTable &table, const Pose2 &goal) : table_(&table)
 {
-    // the two headings nearest the goal's, at the four nodes round its position
+    // the two headings nearest the goal's
     const int n = table.headings();
     std::vector<std::pair<double, int>> byTurn;
     for (int h = 0; h < n; ++h) byTurn.push_back({std::abs(wrapAngle(goal.yaw - table.node(0, 0, h).yaw)), h});
@@ -125,11 +128,9 @@ CurveTableBound::CurveTableBound(const CurveTable &table, const Pose2 &goal) : t
             for (int dj = 1 - w; dj <= w; ++dj)
             {
                 Ref r{i0 + di, j0 + dj, byTurn[std::size_t(k)].second, 0.0};
-                const CarCurve c = table.reverse() ? reedsSheppCurve(goal, table.node(r.i, r.j, r.h), table.radius())
-                                                   : dubinsCurve(goal, table.node(r.i, r.j, r.h), table.radius());
+                const CarCurve c = shortest(goal, table.node(r.i, r.j, r.h), table.radius(), table.reverse());
                 if (c.empty()) continue;
-                // rounded up: the slack is subtracted
-                r.slack = c.length + 1e-9 * (1.0 + c.length);
+                r.slack = c.length + allowance(c.length);  // rounded up: the slack is subtracted
                 all.push_back(r);
             }
     std::sort(all.begin(), all.end(), [](const Ref &a, const Ref &b) { return a.slack < b.slack; });
