@@ -135,6 +135,7 @@ struct Options
     std::vector<int> only;  ///< indices into kPlanners (empty: all)
     bool goalYaw{false};    ///< the goal's yaw is part of the query (a pose to arrive at)
     std::vector<std::string> params;  ///< NAME=VALUE for every car-lattice planner
+    int repeat{1};                    ///< solves per query; the least time is reported
 };
 
 const std::vector<std::pair<std::string, PlannerParams>> kPlanners = {
@@ -152,10 +153,17 @@ std::string labelOf(const std::string &name, const PlannerParams &p)
 
 /// One query of @p planner; fills @p row.
 QueryResult runOne(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &s, const Pose2 &t,
-                   double limit, bool goalYaw, Row &row)
+                   double limit, bool goalYaw, int repeat, Row &row)
 {
-    // the pairs have no goal yaw unless --goal-yaw gives them the one they fit at
+    // the pairs have no goal yaw unless --goal-yaw gives them the one they fit at; repeated,
+    // the least time (a shared machine's noise only ever adds time; the searches are the same)
     QueryResult r = runQuery(setup, planner, s, t, limit, /*freeGoalHeading=*/!goalYaw);
+    for (int k = 1; k < repeat; ++k)
+    {
+        const double least = r.seconds;
+        r = runQuery(setup, planner, s, t, limit, /*freeGoalHeading=*/!goalYaw);
+        r.seconds = std::min(r.seconds, least);
+    }
     ++row.runs;
     row.times.push_back(r.seconds);
     if (r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)
@@ -197,7 +205,7 @@ void nativeMap(const Options &o)
             for (std::size_t k = 0; k < pairs.size(); ++k)
             {
                 const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), t = withFittingYaw(*setup.checker, pairs[k].second);
-                const QueryResult r = runOne(setup, planner, s, t, o.limit, o.goalYaw, row);
+                const QueryResult r = runOne(setup, planner, s, t, o.limit, o.goalYaw, o.repeat, row);
                 std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f -> %.2f,%.2f): %s %.3f s, %llu expansions, %s\n", row.label.c_str(),
                              k, s.x, s.y, t.x, t.y, r.status.asString().c_str(), r.seconds,
                              static_cast<unsigned long long>(r.expanded),
@@ -265,7 +273,7 @@ void campus(const Options &o)
         auto planner = configurePlanner(setup.ss->getSpaceInformation(), {name, params, true, false});
         Row row{labelOf(name, params)};
         for (const auto &[s0, t0] : pairs)
-            runOne(setup, planner, withFittingYaw(*setup.checker, s0), withFittingYaw(*setup.checker, t0), o.limit, false, row);
+            runOne(setup, planner, withFittingYaw(*setup.checker, s0), withFittingYaw(*setup.checker, t0), o.limit, false, 1, row);
         rows.push_back(row);
     }
     std::printf("\n### embedded campus (0.298 m), paper-i, %zu pairs 20-150 m\n\n", pairs.size());
@@ -295,6 +303,11 @@ int main(int argc, char **argv)
     app.add_flag("--goal-yaw", o.goalYaw,
                  "native-map pairs: the goal is a pose, arrived at with the yaw the car fits at there (default: a "
                  "position, any heading)");
+    app.add_option("--repeat", o.repeat,
+                   "native-map queries: solves per query, the least solve() time reported (a shared machine's noise only "
+                   "adds time; the path of the last solve is checked and driven)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     try
     {

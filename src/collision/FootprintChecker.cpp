@@ -33,6 +33,7 @@ FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, st
     reach_ = vehicle_.isPoint() ? 0.0 :
                                   std::hypot(std::max(vehicle_.rearOverhang, vehicle_.length - vehicle_.rearOverhang),
                                              vehicle_.width / 2);
+    discReach_ = 3 * halfDiag_ + 1e-3;  // a point vehicle's one "disc": the point's own cell
     if (vehicle_.isPoint()) return;
     body_ = makeBody(vehicle_, 0.0);
     if (vehicle_.hasPolygon())
@@ -58,6 +59,12 @@ FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, st
         for (std::size_t i = 0; i < candidates.size(); ++i)
             if (clear[i] >= provenR_ && provenR_ > 0) provenDiscs_.push_back(candidates[i]);
     }
+    std::vector<std::array<double, 2>> discs;
+    discOffsetsInto(0.0, discs);
+    double far = 0;
+    for (const auto &d : discs) far = std::max(far, std::hypot(d[0], d[1]));
+    discR_ = vehicle_.hasPolygon() ? provenR_ : std::min(vehicle_.length, vehicle_.width) / 2;
+    discReach_ = far + discR_ + 3 * halfDiag_ + 1e-3;  // (1 mm for the field's float rounding)
 
     // Obstacle boundary cells: blocked cells with a non-blocked 4-neighbour inside the map.
     const OccupancyGrid &g = *grid_;

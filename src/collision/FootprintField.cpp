@@ -42,8 +42,8 @@ int FootprintChecker::quickBody(const Body &b, double x, double y, double yaw, d
     (void)yaw;
     const double off = b.length / 2 - b.rear;
     const Cell c = grid_->worldToCell(x + off * cs, y + off * sn);
-    if (grid_->isBlocked(c.col, c.row)) return b.centreInside ? 0 : -1;
     const double d = field_->cellDistance(c.col, c.row);
+    if (!(d > 0)) return b.centreInside ? 0 : -1;  // a blocked cell (distance 0) or off the map
     if (d - 2.0 * halfDiag_ > b.rOut) return 1;
     if (b.centreInside && d + halfDiag_ < b.rIn) return 0;
     for (int k = 0; k < b.discs; ++k)
@@ -58,8 +58,10 @@ int FootprintChecker::quickBody(const Body &b, double x, double y, double yaw, d
 bool FootprintChecker::rectFree(double cx, double cy, double cs, double sn, double a, double b) const
 {
     const Cell c = grid_->worldToCell(cx, cy);
-    if (grid_->isBlocked(c.col, c.row)) return false;  // the centre lies in a blocked cell
-    if (field_->cellDistance(c.col, c.row) - 2.0 * halfDiag_ > std::sqrt(a * a + b * b)) return true;
+    // distance 0: the centre lies in a blocked cell (or off the map); no second lookup in the grid
+    const double d = field_->cellDistance(c.col, c.row);
+    if (!(d > 0)) return false;
+    if (d - 2.0 * halfDiag_ > std::sqrt(a * a + b * b)) return true;
     const double res = grid_->resolution();
     if (a > res || b > res)
     {
@@ -207,17 +209,31 @@ void FootprintChecker::discOffsetsInto(double yaw, std::vector<std::array<double
     }
 }
 
-bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets) const
+bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets,
+                                       double pointDistance) const
 {
     if (!std::isfinite(x) || !std::isfinite(y)) return true;
-    const double r = vehicle_.isPoint() ? 0.0 : vehicle_.hasPolygon() ? provenR_ : std::min(vehicle_.length, vehicle_.width) / 2;
+    const double r = discR_;
+    // discs no farther from the point than this are clear by its own distance (Lipschitz)
+    const double shown = pointDistance - r - 3 * halfDiag_ - 1e-3;
+    // blocked cells (and cells off the map) have distance 0: for discs wider than a half cell
+    // diagonal the field's test catches them, and the grid need not be read
+    const bool readGrid = !(r > halfDiag_);
     for (const auto &o : offsets)
     {
+        if (shown >= 0 && o[0] * o[0] + o[1] * o[1] <= shown * shown) continue;
         const Cell c = grid_->worldToCell(x + o[0], y + o[1]);
-        if (grid_->isBlocked(c.col, c.row)) return true;
+        if (readGrid && grid_->isBlocked(c.col, c.row)) return true;
         if (field_->cellDistance(c.col, c.row) + halfDiag_ < r) return true;
     }
     return false;
+}
+
+double FootprintChecker::pointDistance(double x, double y) const
+{
+    if (!std::isfinite(x) || !std::isfinite(y)) return 0.0;
+    const Cell c = grid_->worldToCell(x, y);
+    return field_->cellDistance(c.col, c.row);
 }
 
 bool FootprintChecker::provenBlocked(const Pose2 &p) const
@@ -228,15 +244,17 @@ bool FootprintChecker::provenBlocked(const Pose2 &p) const
     return provenBlockedAt(p.x, p.y, offsets);
 }
 
-double FootprintChecker::freeSlack(const Pose2 &p) const
+double FootprintChecker::freeSlack(const Pose2 &p, double below) const
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw) || vehicle_.isPoint()) return 0.0;
     // the discs of quickBody()'s cover: the rectangle grown by r lies inside the discs grown by r
     const Body &b = body_;
     const double cs = std::cos(p.yaw), sn = std::sin(p.yaw);
     double slack = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < b.discs && slack > 0; ++k)
+    // the end discs first: where the body is tight, a corner usually is
+    for (int n = 0; n < b.discs && slack > below; ++n)
     {
+        const int k = n % 2 == 0 ? n / 2 : b.discs - 1 - n / 2;
         const double along = b.firstDisc + k * b.discStep;
         const Cell dc = grid_->worldToCell(p.x + along * cs, p.y + along * sn);
         slack = std::min(slack, field_->cellDistance(dc.col, dc.row) - 2.0 * halfDiag_ - b.discR);

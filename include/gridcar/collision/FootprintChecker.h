@@ -98,8 +98,10 @@ public:
      * rounding): the body moved so that no point of it travels farther is free, and so is the
      * rectangle grown by any margin below slack / sqrt(2) (its corners). 0 or less: nothing proven
      * (always so for a point vehicle and for a pose that is not finite). A few lookups, no FCL.
+     * The lookups stop at the first disc whose slack is @p below or less: the value returned
+     * is then at most @p below, not the least.
      */
-    double freeSlack(const Pose2 &p) const;
+    double freeSlack(const Pose2 &p, double below = 0.0) const;
     /**
      * @brief True only if the distance field proves the rectangle in collision: a blocked
      * cell under its centre, or a blocked cell centre within r of a point of its axis where the
@@ -111,7 +113,18 @@ public:
     /// The same test split for speed: the world offsets of the inscribed discs' centres from
     /// the reference point at a yaw (computed once per heading), then the lookups at a point.
     std::vector<std::array<double, 2>> inscribedDiscOffsets(double yaw) const;
-    bool provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets) const;
+    /// With @p pointDistance = pointDistance(x, y), the discs that distance already shows clear
+    /// (1-Lipschitz, as discsClearAtEveryYaw()) are not looked up: the same answer, fewer lookups.
+    bool provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets,
+                         double pointDistance = -1.0) const;
+    /// d_O at the cell of (x, y) (0 off the map or not finite).
+    double pointDistance(double x, double y) const;
+    /// True only if provenBlockedAt() is false at (x, y) for the discs at every yaw, from one
+    /// lookup: @p pointDistance (pointDistance(x, y)) is at least the discs' farthest reach
+    /// (offset plus radius) and three half cell diagonals (the point's and each disc's place in
+    /// its cell, and the map's border ring), since d_O is 1-Lipschitz between cell centres and 0
+    /// on blocked cells. False means "not shown", not "blocked".
+    bool discsClearAtEveryYaw(double pointDistance) const { return pointDistance >= discReach_; }
     /// Farthest point of the rectangle from the reference point (m): how far a body point moves
     /// per radian of rotation.
     double reach() const { return reach_; }
@@ -195,6 +208,8 @@ private:
     std::shared_ptr<const DistanceField> field_;
     VehicleParams vehicle_;
     double rIn_{0}, rOut_{0}, halfDiag_{0}, reach_{0};
+    double discReach_{0};  ///< discsClearAtEveryYaw()'s threshold
+    double discR_{0};      ///< the radius of provenBlocked()'s discs
     Body body_{};
     /// A polygon footprint: its triangles in the body frame (x0, y0, x1, y1, x2, y2, CCW), the
     /// discs inside it that prove a collision (provenBlocked) and their radius.

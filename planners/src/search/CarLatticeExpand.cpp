@@ -121,7 +121,8 @@ struct CarExpander
                 if (ni == k.i && nj == k.j && nh == k.h) continue;  // still in its own bin
             }
             if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
-            // the samples are made only where the cost needs them or the motion is checked
+            // the world samples are made only where the cost needs them (the motion check computes
+            // the few poses it looks at itself)
             double *cached = shapeSlot(hybrid ? 0 : k.h, p);
             const bool sampled = layered || !cached || std::isnan(*cached);
             if (sampled) S.worldSamples(at, prim, samples);
@@ -134,8 +135,7 @@ struct CarExpander
             // a motion to a state it would not improve is dropped by the search: not checked
             const std::uint32_t seen = S.known(ni, nj, nh);
             if (seen != StateInterner::kNone && !(gs + step < S.space_.g(seen))) continue;
-            if (!sampled) S.worldSamples(at, prim, samples);
-            if (!S.motionFree(from, samples)) continue;
+            if (!S.primitiveFree(at, from, prim)) continue;
             const double hn = hAt(end, ni, nj, nh);
             if (hn == kInf) continue;
             const std::uint32_t id = seen != StateInterner::kNone ? seen : S.intern(ni, nj, nh);
@@ -201,8 +201,8 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         std::vector<int> axis;
         for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
         h2d_->setAxisTest(axis, [this](int i, int j, int a) {
-            const Pose2 p = nodePose(i, j, a);
-            return col_->mayStandOnAxis(p.x, p.y, a);
+            const std::array<double, 2> p = nodeXY(i, j);  // (the axis' yaw is the collision model's)
+            return col_->mayStandOnAxis(p[0], p[1], a);
         });
     }
     h2d_->setCancel(cancelled);

@@ -160,6 +160,23 @@ void CarLatticeSearch::worldSamples(const Pose2 &at, const LatticePrimitive &p, 
     for (const Pose2 &s : p.samples) out.push_back(toWorld({at.x + s.x, at.y + s.y, s.yaw}));  // wrapped in buildPath
 }
 
+bool CarLatticeSearch::primitiveFree(const Pose2 &at, const Pose2 &from, const LatticePrimitive &p) const
+{
+    const std::vector<Pose2> &q = p.samples;
+    if (lattice_->hybrid())
+    {
+        const double c = std::cos(at.yaw), s = std::sin(at.yaw);
+        return curveFree(from, int(q.size()), [&](int i) {
+            const Pose2 &b = q[std::size_t(i - 1)];
+            return toWorld({at.x + c * b.x - s * b.y, at.y + s * b.x + c * b.y, at.yaw + b.yaw});
+        });
+    }
+    return curveFree(from, int(q.size()), [&](int i) {
+        const Pose2 &b = q[std::size_t(i - 1)];
+        return toWorld({at.x + b.x, at.y + b.y, b.yaw});
+    });
+}
+
 bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
 {
     return col_->curveFree(from, n, poseAt, lattice_->margin());
@@ -194,8 +211,8 @@ bool CarLatticeSearch::fitsAtNode(int i, int j) const
 {
     // a relaxation with gridcar's checker, so that the heuristic stays a lower bound: false
     // only where the distance field proves the car in collision at every lattice heading
-    const Pose2 p = nodePose(i, j, 0);
-    return col_->mayStandAt(p.x, p.y);
+    const std::array<double, 2> p = nodeXY(i, j);
+    return col_->mayStandAt(p[0], p[1]);
 }
 
 const CurveTable *CarLatticeSearch::curveTable()

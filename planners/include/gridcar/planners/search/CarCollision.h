@@ -10,6 +10,7 @@
 #include <ompl/base/SpaceInformation.h>
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -73,6 +74,9 @@ public:
 
 private:
     const FootprintChecker &c_;
+    /// freeSlack() of the last start pose curveFree() was asked about, at that margin (NaN: none yet)
+    mutable Pose2 lastFrom_{std::nan(""), std::nan(""), std::nan("")};
+    mutable double lastMargin_{std::nan("")}, lastSlack_{0};
     /// Inscribed-disc offsets per heading and its reverse.
     std::vector<std::vector<std::array<double, 2>>> discs_, discsBack_;
 };

@@ -12,6 +12,7 @@
 #include "gridcar/planners/search/ObstacleHeuristic.h"
 #include "gridcar/planners/search/detail/StateInterner.h"
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -186,6 +187,12 @@ public:
     Pose2 latticePose(const Pose2 &world) const;
     /// World pose of lattice node (i, j) at heading h in the last run()'s frame.
     Pose2 nodePose(int i, int j, int h) const;
+    /// World position of lattice node (i, j) in the last run()'s frame (nodePose() without the yaw).
+    std::array<double, 2> nodeXY(int i, int j) const
+    {
+        const double x = i * lattice_->cell(), y = j * lattice_->cell();
+        return {ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y};
+    }
     /// World pose of a state of the last run() (yaw wrapped): its node's, or on a hybrid lattice
     /// the continuous pose it was reached at.
     Pose2 statePose(std::uint32_t s) const { return worldPose(pose_[s]); }
@@ -256,6 +263,9 @@ private:
     /// The primitive's samples from lattice-frame pose @p at (a node's, or a hybrid state's) in
     /// world coordinates, into @p out.
     void worldSamples(const Pose2 &at, const LatticePrimitive &p, std::vector<Pose2> &out) const;
+    /// motionFree() of primitive @p p from lattice-frame pose @p at (world pose @p from), its
+    /// world samples computed only where the check looks (most are skipped in open ground).
+    bool primitiveFree(const Pose2 &at, const Pose2 &from, const LatticePrimitive &p) const;
     /// A lattice-frame pose in world coordinates (yaw not wrapped).
     Pose2 toWorld(const Pose2 &lat) const
     {

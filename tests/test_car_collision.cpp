@@ -1,0 +1,177 @@
+// The car lattice's collision model on gridcar's checker (FootprintCollision) and the
+// distance-field shortcuts it is built on: each shortcut changes how many lookups a question
+// takes, never its answer, so every test here compares with the plain definition.
+#include "gridcar/planners/search/CarCollision.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+using namespace gridcar;
+
+namespace
+{
+/// A 30 m x 22.5 m map at 0.25 m, origin (-3, 5), with random blocks, some touching the border.
+std::shared_ptr<const OccupancyGrid> blocks(unsigned seed)
+{
+    auto g = std::make_shared<OccupancyGrid>(120, 90, 0.25);
+    g->setOrigin(-3.0, 5.0);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> c(0, 119), r(0, 89), s(1, 9);
+    for (int k = 0; k < 40; ++k)
+    {
+        const int c0 = c(rng), r0 = r(rng), w = s(rng), h = s(rng);
+        for (int y = r0; y < std::min(90, r0 + h); ++y)
+            for (int x = c0; x < std::min(120, c0 + w); ++x) g->set(x, y, CellState::Occupied);
+    }
+    return g;
+}
+
+const char *const kVehicles[] = {"paper-i", "paper-c-car", "paper-c-robot", "point"};
+}  // namespace
+
+TEST(CarCollision, OneLookupShortcutsGiveTheDiscTestsAnswers)
+{
+    // provenBlockedAt() with the point's own distance skips the discs that distance shows
+    // clear; discsClearAtEveryYaw() answers every yaw at once; points off the map included
+    int clearEverywhere = 0, blocked = 0, asked = 0;
+    for (unsigned seed : {1u, 2u})
+    {
+        const auto g = blocks(seed);
+        auto field = std::make_shared<DistanceField>(*g);
+        for (const char *veh : kVehicles)
+        {
+            FootprintChecker fc(g, field, VehicleParams::preset(veh));
+            std::mt19937 rng(seed * 7 + 1);
+            std::uniform_real_distribution<double> ux(-6.0, 30.0), uy(2.0, 30.5);
+            for (int i = 0; i < 400; ++i)
+            {
+                const double x = ux(rng), y = uy(rng), d = fc.pointDistance(x, y);
+                const bool clear = fc.discsClearAtEveryYaw(d);
+                clearEverywhere += clear;
+                for (int k = 0; k < 24; ++k)
+                {
+                    const auto discs = fc.inscribedDiscOffsets(k * M_PI / 12);
+                    const bool plain = fc.provenBlockedAt(x, y, discs);
+                    ++asked;
+                    blocked += plain;
+                    EXPECT_EQ(plain, fc.provenBlockedAt(x, y, discs, d)) << veh << " " << x << "," << y << " yaw step " << k;
+                    if (clear) EXPECT_FALSE(plain) << veh << " " << x << "," << y;
+                }
+            }
+        }
+    }
+    EXPECT_GT(clearEverywhere, 100);  // both branches are exercised
+    EXPECT_GT(blocked, asked / 10);
+}
+
+TEST(CarCollision, FreeSlackStopsEarlyOnlyAtOrBelowTheThresholdAsked)
+{
+    const auto g = blocks(3);
+    FootprintChecker fc(g, std::make_shared<DistanceField>(*g), VehicleParams::preset("paper-i"));
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> ux(-3.0, 27.0), uy(5.0, 27.5), uyaw(-M_PI, M_PI);
+    int early = 0;
+    for (int i = 0; i < 2000; ++i)
+    {
+        const Pose2 p{ux(rng), uy(rng), uyaw(rng)};
+        const double full = fc.freeSlack(p);
+        for (double below : {0.07, 0.5})
+        {
+            const double v = fc.freeSlack(p, below);
+            if (full > below)
+                EXPECT_EQ(v, full);
+            else
+            {
+                EXPECT_LE(v, below);
+                EXPECT_GE(v, full);  // the least of the discs looked at
+                early += v != full;
+            }
+        }
+    }
+    EXPECT_GT(early, 0);
+}
+
+TEST(CarCollision, CurveFreeIsEveryPoseFreeWithTheMargin)
+{
+    // random arcs from random poses, each asked at two margins and from the same start in
+    // turn (the start's room is kept between calls): the answer is that of the grown body at
+    // every pose, however the proofs fall
+    int freeCurves = 0, blockedCurves = 0;
+    for (unsigned seed : {4u, 5u})
+    {
+        const auto g = blocks(seed);
+        auto field = std::make_shared<DistanceField>(*g);
+        for (const char *veh : {"paper-i", "paper-c-car"})
+        {
+            FootprintChecker fc(g, field, VehicleParams::preset(veh));
+            FootprintCollision col(fc);
+            std::mt19937 rng(seed * 3 + 2);
+            std::uniform_real_distribution<double> ux(-3.0, 27.0), uy(5.0, 27.5), uyaw(-M_PI, M_PI), uk(-0.3, 0.3), ul(1.0, 25.0);
+            for (int i = 0; i < 300; ++i)
+            {
+                const Pose2 from{ux(rng), uy(rng), uyaw(rng)};
+                if (!fc.isValidInflated(from, 0.05)) continue;
+                for (int c = 0; c < 3; ++c)
+                {
+                    const double kappa = uk(rng), len = ul(rng);
+                    for (double margin : {0.2, 0.05, 0.1})
+                    {
+                        // poses 2 margin apart for the farthest body point, as the lattice samples
+                        const double ds = 2 * margin / (1.0 + fc.reach() * std::abs(kappa));
+                        const int n = std::max(1, int(std::ceil(len / ds)));
+                        const auto poseAt = [&](int k) {
+                            const double s = len * k / n, th = from.yaw + kappa * s;
+                            if (std::abs(kappa) < 1e-9)
+                                return Pose2{from.x + s * std::cos(from.yaw), from.y + s * std::sin(from.yaw), th};
+                            return Pose2{from.x + (std::sin(th) - std::sin(from.yaw)) / kappa,
+                                         from.y - (std::cos(th) - std::cos(from.yaw)) / kappa, th};
+                        };
+                        bool every = true;
+                        for (int k = 1; k <= n && every; ++k) every = fc.isValidInflated(poseAt(k), margin);
+                        EXPECT_EQ(col.curveFree(from, n, poseAt, margin), every)
+                            << veh << " from " << from.x << "," << from.y << "," << from.yaw << " kappa " << kappa << " length "
+                            << len << " margin " << margin;
+                        (every ? freeCurves : blockedCurves)++;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(freeCurves, 100);
+    EXPECT_GT(blockedCurves, 100);
+}
+
+TEST(CarCollision, HeuristicStandingTestsAreTheDiscTests)
+{
+    // mayStandOnAxis / mayStandAt: "not proven blocked" at an axis (either way) or at some
+    // heading, answered with the point's own distance first
+    const auto g = blocks(6);
+    auto field = std::make_shared<DistanceField>(*g);
+    FootprintChecker fc(g, field, VehicleParams::preset("paper-i"));
+    FootprintCollision col(fc);
+    std::vector<double> yaws;
+    for (int h = 0; h < 16; ++h) yaws.push_back(0.1 + h * M_PI / 8);
+    col.setHeadings(yaws);
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> ux(-5.0, 29.0), uy(3.0, 29.5);
+    int no = 0;
+    for (int i = 0; i < 1500; ++i)
+    {
+        const double x = ux(rng), y = uy(rng);
+        bool any = false;
+        for (int h = 0; h < 16; ++h)
+        {
+            const bool fwd = !fc.provenBlockedAt(x, y, fc.inscribedDiscOffsets(yaws[std::size_t(h)]));
+            const bool back = !fc.provenBlockedAt(x, y, fc.inscribedDiscOffsets(yaws[std::size_t(h)] + M_PI));
+            any = any || fwd;
+            EXPECT_EQ(col.mayStandOnAxis(x, y, h), fwd || back) << x << "," << y << " heading " << h;
+        }
+        EXPECT_EQ(col.mayStandAt(x, y), any) << x << "," << y;
+        no += !any;
+    }
+    EXPECT_GT(no, 50);
+}
