@@ -307,6 +307,7 @@ class PaperCost : public ObstacleCostModel
 public:
     using ObstacleCostModel::ObstacleCostModel;
     double stepCost(const Pose2 &, const std::vector<Pose2> &, double length, double) const override { return length; }
+    bool shapeOnly() const override { return true; }  // (the search then makes no samples for it)
     bool customPriority() const override { return true; }
     double priority(double g, double h, const Pose2 &at) const override { return ImprovedAStar::paperPriority(g, h, o(at)); }
 };

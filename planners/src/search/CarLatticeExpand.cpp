@@ -121,21 +121,35 @@ struct CarExpander
                 if (ni == k.i && nj == k.j && nh == k.h) continue;  // still in its own bin
             }
             if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
-            // the world samples are made only where the cost needs them (the motion check computes
-            // the few poses it looks at itself)
+            const std::int8_t gear = prim.reverse ? -1 : 1;
+            const bool backwards = prim.reverse != S.query_.timeReversed;
+            const bool cusp = S.gear_[s] != 0 && S.gear_[s] != gear;
+            const auto stepOf = [&](double base) {
+                return (backwards ? base * S.query_.reversePenalty : base) + (cusp ? S.query_.cuspPenalty : 0.0);
+            };
+            // a motion to a state it would not improve, or to one expanded already (the search
+            // never reopens one: run() passes reopen=false), is dropped by the search: not
+            // checked. A cost that needs the motion's samples is computed only for a free motion
+            // that its lower bound (least cost per metre, no cost layer) lets improve.
             double *cached = shapeSlot(hybrid ? 0 : k.h, p);
             const bool sampled = layered || !cached || std::isnan(*cached);
-            if (sampled) S.worldSamples(at, prim, samples);
-            if (cached && std::isnan(*cached)) *cached = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
-            double step = cached ? *cached : cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
-            if (layered) step += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
-            const std::int8_t gear = prim.reverse ? -1 : 1;
-            if (prim.reverse != S.query_.timeReversed) step *= S.query_.reversePenalty;  // driven backwards
-            if (S.gear_[s] != 0 && S.gear_[s] != gear) step += S.query_.cuspPenalty;  // a gear change
-            // a motion to a state it would not improve is dropped by the search: not checked
             const std::uint32_t seen = S.known(ni, nj, nh);
-            if (seen != StateInterner::kNone && !(gs + step < S.space_.g(seen))) continue;
+            const double gSeen = seen != StateInterner::kNone ? S.space_.g(seen) : kInf;
+            if (seen != StateInterner::kNone && S.space_.closed(seen)) continue;
+            double step = cached && !sampled ? stepOf(*cached) : stepOf(cost.minCostPerMetre() * prim.length);
+            if (!(gs + step < gSeen)) continue;
             if (!S.primitiveFree(at, from, prim)) continue;
+            if (sampled)
+            {
+                // the world samples are made only where the cost needs them (the motion check
+                // computes the few poses it looks at itself)
+                S.worldSamples(at, prim, samples);
+                if (cached && std::isnan(*cached)) *cached = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+                double base = cached ? *cached : cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
+                if (layered) base += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
+                step = stepOf(base);
+                if (!(gs + step < gSeen)) continue;
+            }
             const double hn = hAt(end, ni, nj, nh);
             if (hn == kInf) continue;
             const std::uint32_t id = seen != StateInterner::kNone ? seen : S.intern(ni, nj, nh);
