@@ -66,6 +66,9 @@ namespace gridcar
 class FootprintChecker
 {
 public:
+    /// @p field must be the distance field of @p grid as it is (its blocked cells are those at
+    /// distance 0: the fast tests read the field alone). Throws std::invalid_argument for a
+    /// missing grid or field or one of another size.
     FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, std::shared_ptr<const DistanceField> field,
                      const VehicleParams &vehicle);
     ~FootprintChecker();
