@@ -129,20 +129,24 @@ inline bool isGrid(const std::string &name)
     return false;
 }
 
-/// A 9 m x 7 m map at 0.1 m with 30 seeded random blocks (the car-lattice search tests).
-inline std::shared_ptr<OccupancyGrid> randomBlocks(unsigned seed)
+/// A free @p cols x @p rows map at @p res with @p blocks seeded random blocks of 1 to @p side
+/// cells a side (some cut by the border).
+inline std::shared_ptr<OccupancyGrid> randomBlocks(unsigned seed, int cols, int rows, double res, int blocks, int side)
 {
-    auto g = std::make_shared<OccupancyGrid>(90, 70, 0.1, CellState::Free);
+    auto g = std::make_shared<OccupancyGrid>(cols, rows, res, CellState::Free);
     std::mt19937 rng(seed);
-    std::uniform_int_distribution<int> uc(0, 89), ur(0, 69), sz(1, 9);
-    for (int k = 0; k < 30; ++k)
+    std::uniform_int_distribution<int> uc(0, cols - 1), ur(0, rows - 1), sz(1, side);
+    for (int k = 0; k < blocks; ++k)
     {
         const int c = uc(rng), r = ur(rng), w = sz(rng), h = sz(rng);
-        for (int rr = r; rr < std::min(70, r + h); ++rr)
-            for (int cc = c; cc < std::min(90, c + w); ++cc) g->set(cc, rr, CellState::Occupied);
+        for (int rr = r; rr < std::min(rows, r + h); ++rr)
+            for (int cc = c; cc < std::min(cols, c + w); ++cc) g->set(cc, rr, CellState::Occupied);
     }
     return g;
 }
+
+/// A 9 m x 7 m map at 0.1 m with 30 seeded random blocks (the car-lattice search tests).
+inline std::shared_ptr<OccupancyGrid> randomBlocks(unsigned seed) { return randomBlocks(seed, 90, 70, 0.1, 30, 9); }
 
 /// A random cell centre where the vehicle fits at one of 16 headings, with that heading.
 inline Pose2 randomFree(const FootprintChecker &fc, std::mt19937 &rng)

@@ -3,6 +3,8 @@
 // takes, never its answer, so every test here compares with the plain definition.
 #include "gridcar/planners/search/CarCollision.h"
 
+#include "PlannerTestUtil.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,19 +16,11 @@ using namespace gridcar;
 
 namespace
 {
-/// A 30 m x 22.5 m map at 0.25 m, origin (-3, 5), with random blocks, some touching the border.
+/// A 30 m x 22.5 m map at 0.25 m, origin (-3, 5), with 40 random blocks, some cut by the border.
 std::shared_ptr<const OccupancyGrid> blocks(unsigned seed)
 {
-    auto g = std::make_shared<OccupancyGrid>(120, 90, 0.25);
+    auto g = test::randomBlocks(seed, 120, 90, 0.25, 40, 9);
     g->setOrigin(-3.0, 5.0);
-    std::mt19937 rng(seed);
-    std::uniform_int_distribution<int> c(0, 119), r(0, 89), s(1, 9);
-    for (int k = 0; k < 40; ++k)
-    {
-        const int c0 = c(rng), r0 = r(rng), w = s(rng), h = s(rng);
-        for (int y = r0; y < std::min(90, r0 + h); ++y)
-            for (int x = c0; x < std::min(120, c0 + w); ++x) g->set(x, y, CellState::Occupied);
-    }
     return g;
 }
 

@@ -26,19 +26,7 @@ namespace ob = ompl::base;
 
 namespace
 {
-std::shared_ptr<OccupancyGrid> randomBlocks(unsigned seed, int W, int H, double res, int blocks, int maxSize)
-{
-    auto g = std::make_shared<OccupancyGrid>(W, H, res, CellState::Free);
-    std::mt19937 rng(seed);
-    std::uniform_int_distribution<int> uc(0, W - 1), ur(0, H - 1), sz(1, maxSize);
-    for (int k = 0; k < blocks; ++k)
-    {
-        const int c = uc(rng), r = ur(rng), w = sz(rng), h = sz(rng);
-        for (int rr = r; rr < std::min(H, r + h); ++rr)
-            for (int cc = c; cc < std::min(W, c + w); ++cc) g->set(cc, rr, CellState::Occupied);
-    }
-    return g;
-}
+using test::randomBlocks;
 
 /// Brute force: does the rectangle of @p v at the pose overlap a blocked cell (or leave the map)?
 /// Samples the rectangle on a grid 1/8 cell apart, boundary included.

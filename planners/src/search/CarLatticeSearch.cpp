@@ -147,34 +147,27 @@ Pose2 CarLatticeSearch::nodePose(int i, int j, int h) const
     return {ox_ + cphi_ * x - sphi_ * y, oy_ + sphi_ * x + cphi_ * y, wrapYaw(phi_ + lattice_->yaw(h))};
 }
 
+Pose2 CarLatticeSearch::sampleWorld(const Pose2 &at, double c, double s, const Pose2 &b) const
+{
+    // a hybrid lattice's samples are body-frame, turned to the state's own yaw; a node's are
+    // lattice-frame offsets with their own yaw (wrapped in buildPath)
+    if (lattice_->hybrid()) return toWorld({at.x + c * b.x - s * b.y, at.y + s * b.x + c * b.y, at.yaw + b.yaw});
+    return toWorld({at.x + b.x, at.y + b.y, b.yaw});
+}
+
 void CarLatticeSearch::worldSamples(const Pose2 &at, const LatticePrimitive &p, std::vector<Pose2> &out) const
 {
     out.clear();
-    if (lattice_->hybrid())
-    {
-        // body-frame samples turned to the state's own yaw
-        const double c = std::cos(at.yaw), s = std::sin(at.yaw);
-        for (const Pose2 &q : p.samples) out.push_back(toWorld({at.x + c * q.x - s * q.y, at.y + s * q.x + c * q.y, at.yaw + q.yaw}));
-        return;
-    }
-    for (const Pose2 &s : p.samples) out.push_back(toWorld({at.x + s.x, at.y + s.y, s.yaw}));  // wrapped in buildPath
+    const bool turned = lattice_->hybrid();  // (a node's samples need no turning)
+    const double c = turned ? std::cos(at.yaw) : 1.0, s = turned ? std::sin(at.yaw) : 0.0;
+    for (const Pose2 &b : p.samples) out.push_back(sampleWorld(at, c, s, b));
 }
 
 bool CarLatticeSearch::primitiveFree(const Pose2 &at, const Pose2 &from, const LatticePrimitive &p) const
 {
-    const std::vector<Pose2> &q = p.samples;
-    if (lattice_->hybrid())
-    {
-        const double c = std::cos(at.yaw), s = std::sin(at.yaw);
-        return curveFree(from, int(q.size()), [&](int i) {
-            const Pose2 &b = q[std::size_t(i - 1)];
-            return toWorld({at.x + c * b.x - s * b.y, at.y + s * b.x + c * b.y, at.yaw + b.yaw});
-        });
-    }
-    return curveFree(from, int(q.size()), [&](int i) {
-        const Pose2 &b = q[std::size_t(i - 1)];
-        return toWorld({at.x + b.x, at.y + b.y, b.yaw});
-    });
+    const bool turned = lattice_->hybrid();  // (a node's samples need no turning)
+    const double c = turned ? std::cos(at.yaw) : 1.0, s = turned ? std::sin(at.yaw) : 0.0;
+    return curveFree(from, int(p.samples.size()), [&](int i) { return sampleWorld(at, c, s, p.samples[std::size_t(i - 1)]); });
 }
 
 bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
@@ -200,11 +193,6 @@ bool CarLatticeSearch::shotFree(const Pose2 &from, int n, const std::function<Po
         blockStart = poseAt(b + m);
     }
     return true;
-}
-
-bool CarLatticeSearch::motionFree(const Pose2 &from, const std::vector<Pose2> &poses) const
-{
-    return curveFree(from, int(poses.size()), [&poses](int i) { return poses[std::size_t(i - 1)]; });
 }
 
 bool CarLatticeSearch::fitsAtNode(int i, int j) const

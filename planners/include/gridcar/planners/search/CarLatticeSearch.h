@@ -198,10 +198,9 @@ public:
     Pose2 statePose(std::uint32_t s) const { return worldPose(pose_[s]); }
     /// Calls fn(node, parent) for every state the last run() expanded (the start: parent = node).
     void forEachExpanded(const std::function<void(const Pose2 &, const Pose2 &)> &fn) const;
-    /// True if the motion from @p from through the world poses @p poses is free: the
-    /// rectangle grown by the lattice's margin at every pose (see CarLattice).
-    bool motionFree(const Pose2 &from, const std::vector<Pose2> &poses) const;
-    /// The same for poses 1..n given by @p poseAt (computed only where needed).
+    /// True if the motion from @p from through poses 1..n given by @p poseAt (computed only
+    /// where needed) is free: the rectangle grown by the lattice's margin at every pose (see
+    /// CarLattice).
     bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const;
     /// curveFree() with the body grown by @p extra metres more (room a follower needs where a
     /// path is changed after the search).
@@ -263,7 +262,9 @@ private:
     /// The primitive's samples from lattice-frame pose @p at (a node's, or a hybrid state's) in
     /// world coordinates, into @p out.
     void worldSamples(const Pose2 &at, const LatticePrimitive &p, std::vector<Pose2> &out) const;
-    /// motionFree() of primitive @p p from lattice-frame pose @p at (world pose @p from), its
+    /// One of those samples, @p c and @p s the cosine and sine of @p at's yaw.
+    Pose2 sampleWorld(const Pose2 &at, double c, double s, const Pose2 &b) const;
+    /// curveFree() of primitive @p p from lattice-frame pose @p at (world pose @p from), its
     /// world samples computed only where the check looks (most are skipped in open ground).
     bool primitiveFree(const Pose2 &at, const Pose2 &from, const LatticePrimitive &p) const;
     /// A lattice-frame pose in world coordinates (yaw not wrapped).
