@@ -27,10 +27,27 @@ std::shared_ptr<const OccupancyGrid> blocks(unsigned seed)
 const char *const kVehicles[] = {"paper-i", "paper-c-car", "paper-c-robot", "point"};
 }  // namespace
 
+/// The inscribed-disc test by its definition, on the grid and the field themselves (not the
+/// checker's bit per cell): a disc is proven blocked where its centre's cell is blocked or the
+/// field there is below its radius less half a cell diagonal.
+bool plainDiscsBlocked(const OccupancyGrid &g, const DistanceField &f, const VehicleParams &v, double x, double y,
+                       const std::vector<std::array<double, 2>> &discs)
+{
+    const double r = std::min(v.length, v.width) / 2, halfDiag = g.resolution() * std::sqrt(2.0) / 2;
+    for (const auto &o : discs)
+    {
+        const Cell c = g.worldToCell(x + o[0], y + o[1]);
+        if (g.isBlocked(c.col, c.row) || f.cellDistance(c.col, c.row) + halfDiag < r) return true;
+    }
+    return false;
+}
+
 TEST(CarCollision, OneLookupShortcutsGiveTheDiscTestsAnswers)
 {
-    // provenBlockedAt() with the point's own distance skips the discs that distance shows
-    // clear; discsClearAtEveryYaw() answers every yaw at once; points off the map included
+    // provenBlockedAt() (one bit per cell) is the disc test by its definition, and with the
+    // point's own distance skips the discs that distance shows clear; discsClearAtEveryYaw()
+    // answers every yaw at once, from the distance or from its own bit; points off the map
+    // included
     int clearEverywhere = 0, blocked = 0, asked = 0;
     for (unsigned seed : {1u, 2u})
     {
@@ -45,13 +62,15 @@ TEST(CarCollision, OneLookupShortcutsGiveTheDiscTestsAnswers)
             {
                 const double x = ux(rng), y = uy(rng), d = fc.pointDistance(x, y);
                 const bool clear = fc.discsClearAtEveryYaw(d);
+                EXPECT_EQ(clear, fc.discsClearAtEveryYawAt(x, y)) << veh << " " << x << "," << y;
                 clearEverywhere += clear;
                 for (int k = 0; k < 24; ++k)
                 {
                     const auto discs = fc.inscribedDiscOffsets(k * M_PI / 12);
-                    const bool plain = fc.provenBlockedAt(x, y, discs);
+                    const bool plain = plainDiscsBlocked(*g, *field, fc.vehicle(), x, y, discs);
                     ++asked;
                     blocked += plain;
+                    EXPECT_EQ(plain, fc.provenBlockedAt(x, y, discs)) << veh << " " << x << "," << y << " yaw step " << k;
                     EXPECT_EQ(plain, fc.provenBlockedAt(x, y, discs, d)) << veh << " " << x << "," << y << " yaw step " << k;
                     if (clear) EXPECT_FALSE(plain) << veh << " " << x << "," << y;
                 }
@@ -141,8 +160,8 @@ TEST(CarCollision, CurveFreeIsEveryPoseFreeWithTheMargin)
 
 TEST(CarCollision, HeuristicStandingTestsAreTheDiscTests)
 {
-    // mayStandOnAxis / mayStandAt: "not proven blocked" at an axis (either way) or at some
-    // heading, answered with the point's own distance first
+    // mayStandOnAxis / axesStanding / mayStandAt: "not proven blocked" at an axis (either way),
+    // at each axis at once, or at some heading, answered with the point's own bit first
     const auto g = blocks(6);
     auto field = std::make_shared<DistanceField>(*g);
     FootprintChecker fc(g, field, VehicleParams::preset("paper-i"));
@@ -156,6 +175,7 @@ TEST(CarCollision, HeuristicStandingTestsAreTheDiscTests)
     for (int i = 0; i < 1500; ++i)
     {
         const double x = ux(rng), y = uy(rng);
+        const std::uint32_t axes = col.axesStanding(x, y, 16);
         bool any = false;
         for (int h = 0; h < 16; ++h)
         {
@@ -163,6 +183,7 @@ TEST(CarCollision, HeuristicStandingTestsAreTheDiscTests)
             const bool back = !fc.provenBlockedAt(x, y, fc.inscribedDiscOffsets(yaws[std::size_t(h)] + M_PI));
             any = any || fwd;
             EXPECT_EQ(col.mayStandOnAxis(x, y, h), fwd || back) << x << "," << y << " heading " << h;
+            EXPECT_EQ(((axes >> h) & 1u) != 0, fwd || back) << x << "," << y << " heading " << h << " (all axes at once)";
         }
         EXPECT_EQ(col.mayStandAt(x, y), any) << x << "," << y;
         no += !any;

@@ -34,7 +34,11 @@ FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, st
                                   std::hypot(std::max(vehicle_.rearOverhang, vehicle_.length - vehicle_.rearOverhang),
                                              vehicle_.width / 2);
     discReach_ = 3 * halfDiag_ + 1e-3;  // a point vehicle's one "disc": the point's own cell
-    if (vehicle_.isPoint()) return;
+    if (vehicle_.isPoint())
+    {
+        buildDiscBits();  // (radius 0: the point's own cell)
+        return;
+    }
     body_ = makeBody(vehicle_, 0.0);
     if (vehicle_.hasPolygon())
     {
@@ -65,6 +69,7 @@ FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, st
     for (const auto &d : discs) far = std::max(far, std::hypot(d[0], d[1]));
     discR_ = vehicle_.hasPolygon() ? provenR_ : std::min(vehicle_.length, vehicle_.width) / 2;
     discReach_ = far + discR_ + 3 * halfDiag_ + 1e-3;  // (1 mm for the field's float rounding)
+    buildDiscBits();
 
     // Obstacle boundary cells: blocked cells with a non-blocked 4-neighbour inside the map.
     const OccupancyGrid &g = *grid_;

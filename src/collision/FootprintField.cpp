@@ -209,22 +209,57 @@ void FootprintChecker::discOffsetsInto(double yaw, std::vector<std::array<double
     }
 }
 
+bool FootprintChecker::discBlockedCell(int col, int row) const
+{
+    // blocked cells (and cells off the map) have distance 0: for discs wider than a half cell
+    // diagonal the field's test catches them, and the grid need not be read
+    const bool readGrid = !(discR_ > halfDiag_);
+    return (readGrid && grid_->isBlocked(col, row)) || field_->cellDistance(col, row) + halfDiag_ < discR_;
+}
+
+void FootprintChecker::buildDiscBits()
+{
+    // one bit per cell: 3 MB for a 24 M-cell map, where the field is 97 MB. The 2D heuristic's
+    // standing tests read cells all round each node, and waited on memory for the field's floats
+    const int W = grid_->width(), H = grid_->height();
+    discBits_.assign((std::size_t(W) * std::size_t(H) + 63) / 64, 0);
+    clearBits_.assign(discBits_.size(), 0);
+    for (int r = 0; r < H; ++r)
+        for (int c = 0; c < W; ++c)
+        {
+            const std::size_t k = std::size_t(r) * std::size_t(W) + std::size_t(c);
+            if (discBlockedCell(c, r)) discBits_[k / 64] |= std::uint64_t(1) << (k % 64);
+            if (discsClearAtEveryYaw(field_->cellDistance(c, r))) clearBits_[k / 64] |= std::uint64_t(1) << (k % 64);
+        }
+}
+
+bool FootprintChecker::discsClearAtEveryYawAt(double x, double y) const
+{
+    if (!std::isfinite(x) || !std::isfinite(y)) return false;
+    const Cell c = grid_->worldToCell(x, y);
+    if (c.col < 0 || c.row < 0 || c.col >= grid_->width() || c.row >= grid_->height()) return discsClearAtEveryYaw(0.0);
+    const std::size_t k = std::size_t(c.row) * std::size_t(grid_->width()) + std::size_t(c.col);
+    return (clearBits_[k / 64] >> (k % 64)) & 1u;
+}
+
 bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets,
                                        double pointDistance) const
 {
     if (!std::isfinite(x) || !std::isfinite(y)) return true;
-    const double r = discR_;
     // discs no farther from the point than this are clear by its own distance (Lipschitz)
-    const double shown = pointDistance - r - 3 * halfDiag_ - 1e-3;
-    // blocked cells (and cells off the map) have distance 0: for discs wider than a half cell
-    // diagonal the field's test catches them, and the grid need not be read
-    const bool readGrid = !(r > halfDiag_);
+    const double shown = pointDistance - discR_ - 3 * halfDiag_ - 1e-3;
+    const int W = grid_->width(), H = grid_->height();
     for (const auto &o : offsets)
     {
         if (shown >= 0 && o[0] * o[0] + o[1] * o[1] <= shown * shown) continue;
         const Cell c = grid_->worldToCell(x + o[0], y + o[1]);
-        if (readGrid && grid_->isBlocked(c.col, c.row)) return true;
-        if (field_->cellDistance(c.col, c.row) + halfDiag_ < r) return true;
+        if (c.col < 0 || c.row < 0 || c.col >= W || c.row >= H)
+        {
+            if (discBlockedCell(c.col, c.row)) return true;
+            continue;
+        }
+        const std::size_t k = std::size_t(c.row) * std::size_t(W) + std::size_t(c.col);
+        if ((discBits_[k / 64] >> (k % 64)) & 1u) return true;
     }
     return false;
 }

@@ -128,6 +128,8 @@ public:
     /// its cell, and the map's border ring), since d_O is 1-Lipschitz between cell centres and 0
     /// on blocked cells. False means "not shown", not "blocked".
     bool discsClearAtEveryYaw(double pointDistance) const { return pointDistance >= discReach_; }
+    /// discsClearAtEveryYaw(pointDistance(x, y)), from a bit per cell kept for it.
+    bool discsClearAtEveryYawAt(double x, double y) const;
     /// Farthest point of the rectangle from the reference point (m): how far a body point moves
     /// per radian of rotation.
     double reach() const { return reach_; }
@@ -194,6 +196,11 @@ private:
     /// inscribedDiscOffsets() into @p out (cleared first).
     void discOffsetsInto(double yaw, std::vector<std::array<double, 2>> &out) const;
     bool validBody(const Body &b, double x, double y, double yaw) const;
+    /// True if an inscribed disc (radius discR_) centred in this cell is proven blocked: the
+    /// cell itself blocked, or the field closer than the radius less the cell's rounding.
+    bool discBlockedCell(int col, int row) const;
+    /// discBits_ from discBlockedCell() at every cell of the map.
+    void buildDiscBits();
     /// 1 proven free, 0 proven blocked, -1 undecided by the distance field.
     int quickBody(const Body &b, double x, double y, double yaw, double cs, double sn) const;
     bool exactBody(const Body &b, double x, double y, double yaw) const;
@@ -213,6 +220,8 @@ private:
     double rIn_{0}, rOut_{0}, halfDiag_{0}, reach_{0};
     double discReach_{0};  ///< discsClearAtEveryYaw()'s threshold
     double discR_{0};      ///< the radius of provenBlocked()'s discs
+    std::vector<std::uint64_t> discBits_;  ///< discBlockedCell() per cell, row-major, one bit each
+    std::vector<std::uint64_t> clearBits_;  ///< discsClearAtEveryYaw() per cell, as discBits_
     Body body_{};
     /// A polygon footprint: its triangles in the body frame (x0, y0, x1, y1, x2, y2, CCW), the
     /// discs inside it that prove a collision (provenBlocked) and their radius.

@@ -6,8 +6,14 @@
 
 namespace gridcar
 {
-/// @p a mapped into [-pi, pi] (std::remainder: a heading difference, either sign).
-inline double wrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
+/// @p a mapped into [-pi, pi] (std::remainder: a heading difference, either sign). An angle
+/// already in range is returned as it is, as std::remainder would (the same bits); the check
+/// spares the searches and smoothers a libm call that sets and restores the rounding mode.
+inline double wrapAngle(double a)
+{
+    if (a >= -M_PI && a <= M_PI) return a;
+    return std::remainder(a, 2.0 * M_PI);
+}
 
 /// @p yaw mapped into OMPL's SO2 range [-pi, pi) (OMPL 1.5 rejects exactly +pi and its
 /// distance() asserts on it).

@@ -20,6 +20,14 @@ bool CarCollision::fitsAtSomeHeading(double x, double y, int steps) const
     return false;
 }
 
+std::uint32_t CarCollision::axesStanding(double x, double y, int axes) const
+{
+    std::uint32_t m = 0;
+    for (int h = 0; h < axes; ++h)
+        if (mayStandOnAxis(x, y, h)) m |= std::uint32_t(1) << h;
+    return m;
+}
+
 std::array<double, 4> FootprintCollision::extent() const
 {
     const OccupancyGrid &g = c_.grid();
@@ -93,17 +101,25 @@ bool FootprintCollision::mayStandOnAxis(double x, double y, int h) const
 {
     // not proven blocked (a relaxation: the distance field's inscribed discs only); in open
     // ground one lookup shows it for every heading, nearer obstacles for the discs near (x, y)
-    const double d = c_.pointDistance(x, y);
-    if (c_.discsClearAtEveryYaw(d)) return true;
-    return !c_.provenBlockedAt(x, y, discs_[std::size_t(h)], d) || !c_.provenBlockedAt(x, y, discsBack_[std::size_t(h)], d);
+    if (c_.discsClearAtEveryYawAt(x, y)) return true;
+    return !c_.provenBlockedAt(x, y, discs_[std::size_t(h)]) || !c_.provenBlockedAt(x, y, discsBack_[std::size_t(h)]);
+}
+
+std::uint32_t FootprintCollision::axesStanding(double x, double y, int axes) const
+{
+    if (c_.discsClearAtEveryYawAt(x, y)) return axes >= 32 ? ~std::uint32_t(0) : (std::uint32_t(1) << axes) - 1;
+    std::uint32_t m = 0;
+    for (int h = 0; h < axes; ++h)
+        if (!c_.provenBlockedAt(x, y, discs_[std::size_t(h)]) || !c_.provenBlockedAt(x, y, discsBack_[std::size_t(h)]))
+            m |= std::uint32_t(1) << h;
+    return m;
 }
 
 bool FootprintCollision::mayStandAt(double x, double y) const
 {
-    const double dist = c_.pointDistance(x, y);
-    if (c_.discsClearAtEveryYaw(dist)) return true;
+    if (c_.discsClearAtEveryYawAt(x, y)) return true;
     for (const auto &d : discs_)
-        if (!c_.provenBlockedAt(x, y, d, dist)) return true;
+        if (!c_.provenBlockedAt(x, y, d)) return true;
     return false;
 }
 

@@ -214,9 +214,9 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         // that heading or its reverse
         std::vector<int> axis;
         for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
-        h2d_->setAxisTest(axis, [this](int i, int j, int a) {
-            const std::array<double, 2> p = nodeXY(i, j);  // (the axis' yaw is the collision model's)
-            return col_->mayStandOnAxis(p[0], p[1], a);
+        h2d_->setAxisTest(axis, [this, H](int i, int j) {
+            const std::array<double, 2> p = nodeXY(i, j);  // (the axes' yaws are the collision model's)
+            return std::uint16_t(col_->axesStanding(p[0], p[1], H / 2));
         });
     }
     h2d_->setCancel(cancelled);

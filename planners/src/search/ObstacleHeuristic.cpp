@@ -10,7 +10,7 @@ namespace gridcar
 {
 namespace
 {
-constexpr std::uint8_t kClosed = 1, kAsked = 2, kFree = 4;
+constexpr std::uint8_t kClosed = 1, kAsked = 2, kFree = 4, kAxes = 8;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
@@ -82,23 +82,22 @@ void ObstacleHeuristic::reset(int i0, int j0, int ni, int nj, const std::vector<
     }
 }
 
-void ObstacleHeuristic::setAxisTest(std::vector<int> stepAxis, std::function<bool(int, int, int)> fitsAxis)
+void ObstacleHeuristic::setAxisTest(std::vector<int> stepAxis, std::function<std::uint16_t(int, int)> fitsAxes)
 {
     stepAxis_ = std::move(stepAxis);
     stepAxis_.resize(steps_.size(), -1);  // reverse steps added by the constructor: no test
-    fitsAxis_ = std::move(fitsAxis);
+    fitsAxes_ = std::move(fitsAxes);
 }
 
 bool ObstacleHeuristic::axisFits(std::size_t n, int i, int j, int axis)
 {
-    const auto bit = std::uint16_t(1u << axis);
     Node &x = at(n);
-    if (!(x.axisAsked & bit))
+    if (!(x.state & kAxes))
     {
-        x.axisAsked = std::uint16_t(x.axisAsked | bit);
-        if (fitsAxis_(i, j, axis)) x.axisOk = std::uint16_t(x.axisOk | bit);
+        x.state |= kAxes;
+        x.axisOk = fitsAxes_(i, j);
     }
-    return (x.axisOk & bit) != 0;
+    return (x.axisOk >> axis) & 1u;
 }
 
 double ObstacleHeuristic::weightAt(std::size_t n, int i, int j)
@@ -131,7 +130,7 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
             if (!inBox(a, b)) continue;
             const std::size_t m = idx(a, b);
             if (at(m).state & kClosed) continue;
-            if (fitsAxis_ && stepAxis_[k] >= 0)
+            if (fitsAxes_ && stepAxis_[k] >= 0)
             {
                 // the oriented test implies the node test
                 if (!(axisFits(e.n, i, j, stepAxis_[k]) && axisFits(m, a, b, stepAxis_[k]))) continue;

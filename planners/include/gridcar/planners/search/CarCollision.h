@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -41,6 +42,8 @@ public:
     virtual void setHeadings(const std::vector<double> &yaws) = 0;
     /// False only if the car cannot stand at (x, y) lined up with heading @p h or its reverse.
     virtual bool mayStandOnAxis(double x, double y, int h) const = 0;
+    /// Bit h set where mayStandOnAxis(x, y, h), for h below @p axes (at most 32).
+    virtual std::uint32_t axesStanding(double x, double y, int axes) const;
     /// False only if the car cannot stand at (x, y) at any of the headings.
     virtual bool mayStandAt(double x, double y) const = 0;
     /// True if the answers are relaxations (the heuristic is then a lower bound).
@@ -66,6 +69,8 @@ public:
     double reach() const override { return c_.reach(); }
     void setHeadings(const std::vector<double> &yaws) override;
     bool mayStandOnAxis(double x, double y, int h) const override;
+    /// One lookup answers every axis in open ground.
+    std::uint32_t axesStanding(double x, double y, int axes) const override;
     bool mayStandAt(double x, double y) const override;
     bool relaxed() const override { return true; }
     bool segmentFree(const Pose2 &a, const Pose2 &b) const override { return c_.isMotionValid(a, b); }

@@ -60,10 +60,10 @@ public:
     /// Edge weights: an edge costs its length x min(weight(a), weight(b)) (default 1). Weights
     /// must be >= 1: the search's own Euclidean guide assumes it.
     void setWeight(std::function<double(int, int)> weight) { weight_ = std::move(weight); }
-    /// Oriented edges: a step also needs fitsAxis(i, j, axis) true at both its nodes, axis =
+    /// Oriented edges: a step also needs bit axis of fitsAxes(i, j) set at both its nodes, axis =
     /// stepAxis[k] for step k (the car fits there lined up with the step). Asked at most once
-    /// per node and axis (at most 16 axes).
-    void setAxisTest(std::vector<int> stepAxis, std::function<bool(int, int, int)> fitsAxis);
+    /// per node, for all its axes at once (at most 16: one lookup may answer them all).
+    void setAxisTest(std::vector<int> stepAxis, std::function<std::uint16_t(int, int)> fitsAxes);
     /// Polled while distance() resumes the search: every closed node at first, every 1024 once
     /// polls come fast (PollSchedule).
     void setCancel(std::function<bool()> cancelled) { cancelled_ = std::move(cancelled); }
@@ -87,7 +87,7 @@ private:
     std::function<bool()> cancelled_;
     std::function<double(int, int)> weight_;
     std::vector<int> stepAxis_;
-    std::function<bool(int, int, int)> fitsAxis_;
+    std::function<std::uint16_t(int, int)> fitsAxes_;
     bool axisFits(std::size_t n, int i, int j, int axis);
     bool stopped_{false};
     PollSchedule poll_{1023};  ///< when expandUntil() polls cancelled_ (reset per search)
@@ -96,8 +96,8 @@ private:
         double g;
         float w;  ///< cached edge weight (< 0: not computed)
         std::uint32_t stamp;
-        std::uint16_t axisAsked, axisOk;
-        std::uint8_t state;  ///< bit 0 closed, bit 1 asked, bit 2 traversable
+        std::uint16_t axisOk;  ///< fitsAxes() (valid once bit 3 of state is set)
+        std::uint8_t state;    ///< bit 0 closed, bit 1 asked, bit 2 traversable, bit 3 axes asked
     };
     /// calloc'd (zero bytes: stamp 0, stale for every epoch >= 1): a box of 24 M nodes costs
     /// no fill before the first query, only the pages the search touches
@@ -112,7 +112,7 @@ private:
     Node &at(std::size_t n)
     {
         Node &x = nodes_[n];
-        if (x.stamp != epoch_) x = Node{std::numeric_limits<double>::infinity(), -1.0f, epoch_, 0, 0, 0};
+        if (x.stamp != epoch_) x = Node{std::numeric_limits<double>::infinity(), -1.0f, epoch_, 0, 0};
         return x;
     }
     struct Entry
