@@ -110,9 +110,10 @@ TEST(CarCollision, FreeSlackStopsEarlyOnlyAtOrBelowTheThresholdAsked)
 
 TEST(CarCollision, CurveFreeIsEveryPoseFreeWithTheMargin)
 {
-    // random arcs from random poses, each asked at two margins and from the same start in
+    // random arcs from random poses, each asked at three margins and from the same start in
     // turn (the start's room is kept between calls): the answer is that of the grown body at
-    // every pose, however the proofs fall
+    // every pose, however the proofs fall, with the yaws' cosines and sines computed by the
+    // check or given to it
     int freeCurves = 0, blockedCurves = 0;
     for (unsigned seed : {4u, 5u})
     {
@@ -148,6 +149,13 @@ TEST(CarCollision, CurveFreeIsEveryPoseFreeWithTheMargin)
                         EXPECT_EQ(col.curveFree(from, n, poseAt, margin), every)
                             << veh << " from " << from.x << "," << from.y << "," << from.yaw << " kappa " << kappa << " length "
                             << len << " margin " << margin;
+                        // the inlined form, each pose's cosine and sine given by turning the
+                        // start's (as the lattice's primitives give theirs)
+                        const double c0 = std::cos(from.yaw), s0 = std::sin(from.yaw);
+                        EXPECT_EQ(col.curveFreeOriented(from, n, [&](int k) {
+                            const double turn = kappa * len * k / n, ct = std::cos(turn), st = std::sin(turn);
+                            return OrientedPose{poseAt(k), c0 * ct - s0 * st, s0 * ct + c0 * st};
+                        }, margin), every) << veh << " (cosines and sines given)";
                         (every ? freeCurves : blockedCurves)++;
                     }
                 }

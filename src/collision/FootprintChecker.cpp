@@ -239,8 +239,13 @@ bool FootprintChecker::exactBody(const Body &b, double x, double y, double yaw) 
 
 bool FootprintChecker::validBody(const Body &b, double x, double y, double yaw) const
 {
+    if (!std::isfinite(yaw)) return false;
+    return validBody(b, x, y, yaw, std::cos(yaw), std::sin(yaw));
+}
+
+bool FootprintChecker::validBody(const Body &b, double x, double y, double yaw, double cs, double sn) const
+{
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) return false;
-    const double cs = std::cos(yaw), sn = std::sin(yaw);
     const int q = quickBody(b, x, y, yaw, cs, sn);
     if (q == 0)
     {
@@ -292,6 +297,13 @@ bool FootprintChecker::isValidInflated(const Pose2 &p, double margin) const
     if (!(margin > 0.0) || vehicle_.isPoint()) return isValid(p);
     if (!std::isfinite(margin)) return false;
     return validBody(bodyFor(margin), p.x, p.y, p.yaw);
+}
+
+bool FootprintChecker::isValidInflated(const Pose2 &p, double cs, double sn, double margin) const
+{
+    if (!(margin > 0.0) || vehicle_.isPoint()) return isValid(p);
+    if (!std::isfinite(margin)) return false;
+    return validBody(bodyFor(margin), p.x, p.y, p.yaw, cs, sn);
 }
 
 bool FootprintChecker::fitsAtSomeHeading(double x, double y, int headings, double *yaw) const

@@ -180,13 +180,22 @@ std::vector<std::array<double, 2>> FootprintChecker::inscribedDiscOffsets(double
 
 void FootprintChecker::discOffsetsInto(double yaw, std::vector<std::array<double, 2>> &out) const
 {
+    if (vehicle_.isPoint())
+    {
+        out.assign(1, {0.0, 0.0});
+        return;
+    }
+    discOffsetsInto(std::cos(yaw), std::sin(yaw), out);
+}
+
+void FootprintChecker::discOffsetsInto(double cs, double sn, std::vector<std::array<double, 2>> &out) const
+{
     out.clear();
     if (vehicle_.isPoint())
     {
         out.push_back({0.0, 0.0});
         return;
     }
-    const double cs = std::cos(yaw), sn = std::sin(yaw);
     if (vehicle_.hasPolygon())
     {
         for (const auto &d : provenDiscs_) out.push_back({cs * d[0] - sn * d[1], sn * d[0] + cs * d[1]});
@@ -274,17 +283,28 @@ double FootprintChecker::pointDistance(double x, double y) const
 bool FootprintChecker::provenBlocked(const Pose2 &p) const
 {
     if (!std::isfinite(p.yaw)) return true;
+    return provenBlocked(p, std::cos(p.yaw), std::sin(p.yaw));
+}
+
+bool FootprintChecker::provenBlocked(const Pose2 &p, double cs, double sn) const
+{
+    if (!std::isfinite(p.yaw)) return true;
     thread_local std::vector<std::array<double, 2>> offsets;  // the search asks for millions: no allocation each
-    discOffsetsInto(p.yaw, offsets);
+    discOffsetsInto(cs, sn, offsets);
     return provenBlockedAt(p.x, p.y, offsets);
 }
 
 double FootprintChecker::freeSlack(const Pose2 &p, double below) const
 {
+    if (!std::isfinite(p.yaw)) return 0.0;
+    return freeSlack(p, std::cos(p.yaw), std::sin(p.yaw), below);
+}
+
+double FootprintChecker::freeSlack(const Pose2 &p, double cs, double sn, double below) const
+{
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw) || vehicle_.isPoint()) return 0.0;
     // the discs of quickBody()'s cover: the rectangle grown by r lies inside the discs grown by r
     const Body &b = body_;
-    const double cs = std::cos(p.yaw), sn = std::sin(p.yaw);
     double slack = std::numeric_limits<double>::infinity();
     // the end discs first: where the body is tight, a corner usually is
     for (int n = 0; n < b.discs && slack > below; ++n)

@@ -91,6 +91,9 @@ public:
      * one of the two poses, so the swept motion is certified, not only the sampled poses.
      */
     bool isValidInflated(const Pose2 &p, double margin) const;
+    /// The same with @p cs, @p sn = cos and sin of p.yaw given (a caller that has them spares
+    /// the trigonometric calls; the answer is the same).
+    bool isValidInflated(const Pose2 &p, double cs, double sn, double margin) const;
     /// The distance-field tests alone for the rectangle grown by @p margin: true only when
     /// they prove it free (no FCL; false means "not proven", not "in collision").
     bool provenFree(const Pose2 &p, double margin) const;
@@ -105,6 +108,8 @@ public:
      * is then at most @p below, not the least.
      */
     double freeSlack(const Pose2 &p, double below = 0.0) const;
+    /// The same with cos and sin of p.yaw given.
+    double freeSlack(const Pose2 &p, double cs, double sn, double below) const;
     /**
      * @brief True only if the distance field proves the rectangle in collision: a blocked
      * cell under its centre, or a blocked cell centre within r of a point of its axis where the
@@ -113,6 +118,8 @@ public:
      * relaxation (the car lattice's 2D heuristic uses it).
      */
     bool provenBlocked(const Pose2 &p) const;
+    /// The same with cos and sin of p.yaw given.
+    bool provenBlocked(const Pose2 &p, double cs, double sn) const;
     /// The same test split for speed: the world offsets of the inscribed discs' centres from
     /// the reference point at a yaw (computed once per heading), then the lookups at a point.
     std::vector<std::array<double, 2>> inscribedDiscOffsets(double yaw) const;
@@ -195,7 +202,10 @@ private:
     const Body &bodyFor(double margin) const;
     /// inscribedDiscOffsets() into @p out (cleared first).
     void discOffsetsInto(double yaw, std::vector<std::array<double, 2>> &out) const;
+    /// The same at the yaw of cos @p cs, sin @p sn.
+    void discOffsetsInto(double cs, double sn, std::vector<std::array<double, 2>> &out) const;
     bool validBody(const Body &b, double x, double y, double yaw) const;
+    bool validBody(const Body &b, double x, double y, double yaw, double cs, double sn) const;
     /// True if an inscribed disc (radius discR_) centred in this cell is proven blocked: the
     /// cell itself blocked, or the field closer than the radius less the cell's rounding.
     bool discBlockedCell(int col, int row) const;

@@ -36,54 +36,10 @@ std::array<double, 4> FootprintCollision::extent() const
 
 bool FootprintCollision::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double m) const
 {
-    // No body point moves more than 2 m from one pose to the next (the caller's spacing). A
-    // pose whose body the distance field proves free with slack r (freeSlack(): every body
-    // point may move r) proves the next (r - sqrt(2) m) / 2 m poses free with the margin (the
-    // grown rectangle's corners reach sqrt(2) m out): in open space one lookup stands for many
-    // poses. Where it proves too little, the pose is checked exactly with the margin (FCL only
-    // where the distance field cannot decide). Stops at the first pose in collision. Which
-    // proofs are tried changes the cost, never the answer: true exactly when every pose is free.
-    const double step = 2 * m, grown = M_SQRT2 * m;
-    const auto reach = [&](double slack) {
-        return slack > grown && step > 0 ? std::min(double(n), std::floor((slack - grown) / step)) : 0.0;
-    };
-    // the room at the start: the search asks it for each motion of one expansion in turn
-    // (its value is exact only above this margin's threshold: kept per margin)
-    if (!(lastFrom_.x == from.x && lastFrom_.y == from.y && lastFrom_.yaw == from.yaw && lastMargin_ == m))
-    {
-        lastFrom_ = from;
-        lastMargin_ = m;
-        lastSlack_ = c_.freeSlack(from, grown);
-    }
-    int proven = int(reach(lastSlack_));  // poses 1..proven are free
-    if (proven >= n) return true;
-    // the cheap proof of a collision (inscribed discs) at the last pose first; with the every
-    // 16th poses below, these proofs find the motions they found when all were tested first,
-    // with 30 % of the tests (paper I's car on its 20 Tsudanuma pairs: 304 991 motions)
-    constexpr int kCoarse = 16;
-    if (c_.provenBlocked(poseAt(n))) return false;
-    bool coarse = false;
-    for (int i = proven + 1; i <= n; ++i)
-    {
+    return curveFreeOriented(from, n, [&poseAt](int i) {
         const Pose2 p = poseAt(i);
-        const double slack = c_.freeSlack(p, grown);
-        if (slack > grown)
-        {
-            i += int(std::min(reach(slack), double(n - i)));
-            continue;
-        }
-        // before the first exact test, the same proof at every kCoarse-th pose from the end
-        // down to here, so that a motion ending in collision is not tested pose by pose on its
-        // way there; a motion proven free by its slack all along never pays for it
-        if (!coarse)
-        {
-            coarse = true;
-            for (int k = n - kCoarse; k > i; k -= kCoarse)
-                if (c_.provenBlocked(poseAt(k))) return false;
-        }
-        if (!c_.isValidInflated(p, m)) return false;
-    }
-    return true;
+        return OrientedPose{p, std::cos(p.yaw), std::sin(p.yaw)};
+    }, m);
 }
 
 void FootprintCollision::setHeadings(const std::vector<double> &yaws)

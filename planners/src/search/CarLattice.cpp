@@ -46,6 +46,7 @@ CarLattice::CarLattice(const CarLatticeConfig &config) : config_(config)
     {
         for (int h = 0; h < config.headings; ++h) yaw_.push_back(wrapYaw(2 * M_PI * h / config.headings));
         addHybrid();
+        cacheSampleTrig();
         return;
     }
     yaw_ = stepYaw_;
@@ -67,6 +68,17 @@ CarLattice::CarLattice(const CarLatticeConfig &config) : config_(config)
     }
     if (config.reverse)
         for (int h = 0; h < config.headings; ++h) addReverse(h);
+    cacheSampleTrig();
+}
+
+void CarLattice::cacheSampleTrig()
+{
+    for (auto &set : prims_)
+        for (LatticePrimitive &p : set)
+        {
+            p.sampleCS.clear();
+            for (const Pose2 &q : p.samples) p.sampleCS.push_back({std::cos(q.yaw), std::sin(q.yaw)});
+        }
 }
 
 void CarLattice::addReverse(int h)

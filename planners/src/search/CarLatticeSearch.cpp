@@ -26,6 +26,7 @@ CarLatticeSearch::CarLatticeSearch(const FootprintChecker &checker, std::shared_
 CarLatticeSearch::CarLatticeSearch(std::shared_ptr<CarCollision> collision, std::shared_ptr<const CarLattice> lattice)
   : col_(std::move(collision)), lattice_(std::move(lattice))
 {
+    fc_ = dynamic_cast<const FootprintCollision *>(col_.get());
     ratio_ = measureRatio();
     const CarLatticeConfig &cfg = lattice_->config();
     if (cfg.curvatureRate > 0 && !cfg.reverse) clothoid_ = std::make_unique<ClothoidTurn>(cfg.turnRadius, cfg.curvatureRate);
@@ -167,7 +168,17 @@ bool CarLatticeSearch::primitiveFree(const Pose2 &at, const Pose2 &from, const L
 {
     const bool turned = lattice_->hybrid();  // (a node's samples need no turning)
     const double c = turned ? std::cos(at.yaw) : 1.0, s = turned ? std::sin(at.yaw) : 0.0;
-    return curveFree(from, int(p.samples.size()), [&](int i) { return sampleWorld(at, c, s, p.samples[std::size_t(i - 1)]); });
+    const int n = int(p.samples.size());
+    if (!fc_) return curveFree(from, n, [&](int i) { return sampleWorld(at, c, s, p.samples[std::size_t(i - 1)]); });
+    // a sample's world yaw is the frame's (and a hybrid state's own) plus its own: its cosine
+    // and sine by turning the primitive's (with no turn at all, as in a frame of yaw 0, the
+    // same bits as std::cos and std::sin of the sum)
+    const double cw = cphi_ * c - sphi_ * s, sw = sphi_ * c + cphi_ * s;
+    return fc_->curveFreeOriented(from, n, [&](int i) {
+        const std::size_t k = std::size_t(i - 1);
+        const auto &t = p.sampleCS[k];
+        return OrientedPose{sampleWorld(at, c, s, p.samples[k]), cw * t[0] - sw * t[1], sw * t[0] + cw * t[1]};
+    }, lattice_->margin());
 }
 
 bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const

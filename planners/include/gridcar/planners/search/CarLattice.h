@@ -63,6 +63,9 @@ struct LatticePrimitive
     /// Poses along it, relative to the start node, spaced so that no body point moves more than
     /// the configured spacing between two of them; the start pose excluded, the end included.
     std::vector<Pose2> samples;
+    /// cos and sin of each sample's yaw (the motion checks turn them by the frame's yaw instead
+    /// of calling the trigonometric functions per pose).
+    std::vector<std::array<double, 2>> sampleCS;
 };
 
 /**
@@ -133,6 +136,8 @@ private:
     std::vector<double> stepYaw_;
     std::vector<double> yaw_;
     std::vector<std::vector<LatticePrimitive>> prims_;
+    /// Fills every primitive's sampleCS (once its samples are final).
+    void cacheSampleTrig();
 };
 
 }  // namespace gridcar

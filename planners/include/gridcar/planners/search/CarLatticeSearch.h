@@ -283,6 +283,7 @@ private:
     double measureRatio() const;
 
     std::shared_ptr<CarCollision> col_;
+    const FootprintCollision *fc_{nullptr};  ///< col_ when it is gridcar's checker (primitiveFree()'s inlined path)
     std::shared_ptr<const CarLattice> lattice_;
     double ratio_{1.0};
     // the last run's frame, states and heuristic
