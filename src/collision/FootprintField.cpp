@@ -180,11 +180,6 @@ std::vector<std::array<double, 2>> FootprintChecker::inscribedDiscOffsets(double
 
 void FootprintChecker::discOffsetsInto(double yaw, std::vector<std::array<double, 2>> &out) const
 {
-    if (vehicle_.isPoint())
-    {
-        out.assign(1, {0.0, 0.0});
-        return;
-    }
     discOffsetsInto(std::cos(yaw), std::sin(yaw), out);
 }
 
@@ -247,37 +242,21 @@ bool FootprintChecker::discsClearAtEveryYawAt(double x, double y) const
     if (!std::isfinite(x) || !std::isfinite(y)) return false;
     const Cell c = grid_->worldToCell(x, y);
     if (c.col < 0 || c.row < 0 || c.col >= grid_->width() || c.row >= grid_->height()) return discsClearAtEveryYaw(0.0);
-    const std::size_t k = std::size_t(c.row) * std::size_t(grid_->width()) + std::size_t(c.col);
-    return (clearBits_[k / 64] >> (k % 64)) & 1u;
+    return cellBit(clearBits_, std::size_t(c.row) * std::size_t(grid_->width()) + std::size_t(c.col));
 }
 
-bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets,
-                                       double pointDistance) const
+bool FootprintChecker::provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets) const
 {
     if (!std::isfinite(x) || !std::isfinite(y)) return true;
-    // discs no farther from the point than this are clear by its own distance (Lipschitz)
-    const double shown = pointDistance - discR_ - 3 * halfDiag_ - 1e-3;
     const int W = grid_->width(), H = grid_->height();
     for (const auto &o : offsets)
     {
-        if (shown >= 0 && o[0] * o[0] + o[1] * o[1] <= shown * shown) continue;
         const Cell c = grid_->worldToCell(x + o[0], y + o[1]);
-        if (c.col < 0 || c.row < 0 || c.col >= W || c.row >= H)
-        {
-            if (discBlockedCell(c.col, c.row)) return true;
-            continue;
-        }
-        const std::size_t k = std::size_t(c.row) * std::size_t(W) + std::size_t(c.col);
-        if ((discBits_[k / 64] >> (k % 64)) & 1u) return true;
+        const bool on = c.col >= 0 && c.row >= 0 && c.col < W && c.row < H;
+        if (on ? cellBit(discBits_, std::size_t(c.row) * std::size_t(W) + std::size_t(c.col)) : discBlockedCell(c.col, c.row))
+            return true;
     }
     return false;
-}
-
-double FootprintChecker::pointDistance(double x, double y) const
-{
-    if (!std::isfinite(x) || !std::isfinite(y)) return 0.0;
-    const Cell c = grid_->worldToCell(x, y);
-    return field_->cellDistance(c.col, c.row);
 }
 
 bool FootprintChecker::provenBlocked(const Pose2 &p) const

@@ -123,19 +123,16 @@ public:
     /// The same test split for speed: the world offsets of the inscribed discs' centres from
     /// the reference point at a yaw (computed once per heading), then the lookups at a point.
     std::vector<std::array<double, 2>> inscribedDiscOffsets(double yaw) const;
-    /// With @p pointDistance = pointDistance(x, y), the discs that distance already shows clear
-    /// (1-Lipschitz, as discsClearAtEveryYaw()) are not looked up: the same answer, fewer lookups.
-    bool provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets,
-                         double pointDistance = -1.0) const;
-    /// d_O at the cell of (x, y) (0 off the map or not finite).
-    double pointDistance(double x, double y) const;
+    /// One bit per disc: the checker keeps the test's answer for every cell of the map.
+    bool provenBlockedAt(double x, double y, const std::vector<std::array<double, 2>> &offsets) const;
     /// True only if provenBlockedAt() is false at (x, y) for the discs at every yaw, from one
-    /// lookup: @p pointDistance (pointDistance(x, y)) is at least the discs' farthest reach
+    /// lookup: @p pointDistance (d_O at the cell of (x, y)) is at least the discs' farthest reach
     /// (offset plus radius) and three half cell diagonals (the point's and each disc's place in
     /// its cell, and the map's border ring), since d_O is 1-Lipschitz between cell centres and 0
     /// on blocked cells. False means "not shown", not "blocked".
     bool discsClearAtEveryYaw(double pointDistance) const { return pointDistance >= discReach_; }
-    /// discsClearAtEveryYaw(pointDistance(x, y)), from a bit per cell kept for it.
+    /// discsClearAtEveryYaw() of d_O at the cell of (x, y) (0 off the map), from a bit per cell
+    /// kept for it.
     bool discsClearAtEveryYawAt(double x, double y) const;
     /// Farthest point of the rectangle from the reference point (m): how far a body point moves
     /// per radian of rotation.
@@ -209,8 +206,10 @@ private:
     /// True if an inscribed disc (radius discR_) centred in this cell is proven blocked: the
     /// cell itself blocked, or the field closer than the radius less the cell's rounding.
     bool discBlockedCell(int col, int row) const;
-    /// discBits_ from discBlockedCell() at every cell of the map.
+    /// discBits_ from discBlockedCell() and clearBits_ from discsClearAtEveryYaw() at every cell.
     void buildDiscBits();
+    /// Bit @p k (row-major cell index) of @p bits.
+    static bool cellBit(const std::vector<std::uint64_t> &bits, std::size_t k) { return (bits[k / 64] >> (k % 64)) & 1u; }
     /// 1 proven free, 0 proven blocked, -1 undecided by the distance field.
     int quickBody(const Body &b, double x, double y, double yaw, double cs, double sn) const;
     bool exactBody(const Body &b, double x, double y, double yaw) const;

@@ -56,7 +56,7 @@ void FootprintCollision::setHeadings(const std::vector<double> &yaws)
 bool FootprintCollision::mayStandOnAxis(double x, double y, int h) const
 {
     // not proven blocked (a relaxation: the distance field's inscribed discs only); in open
-    // ground one lookup shows it for every heading, nearer obstacles for the discs near (x, y)
+    // ground one bit shows it for every heading
     if (c_.discsClearAtEveryYawAt(x, y)) return true;
     return !c_.provenBlockedAt(x, y, discs_[std::size_t(h)]) || !c_.provenBlockedAt(x, y, discsBack_[std::size_t(h)]);
 }
