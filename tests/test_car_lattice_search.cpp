@@ -329,3 +329,55 @@ TEST(CarLatticeSearch, TheCurveTableBoundCutsExpansionsOnParkingQueries)
     std::printf("paper I's car, perpendicular and lot queries: %llu expansions without a curve bound, %llu with the table\n",
                 static_cast<unsigned long long>(off), static_cast<unsigned long long>(fromTable));
 }
+
+// Motions checked when the search comes to them (the default where costs are known before the
+// check) against every motion checked when generated: the same states expanded and the same
+// path, on forward and reversing lattices, with the analytic expansion and with a node goal.
+TEST(CarLatticeSearch, LazyMotionChecksChangeNothingButTheWork)
+{
+    int compared = 0, exact = 0;
+    for (unsigned seed = 1; seed <= 5; ++seed)
+    {
+        auto g = randomBlocks(seed);
+        auto field = std::make_shared<DistanceField>(*g);
+        FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
+        for (bool reverse : {false, true})
+        {
+            CarLatticeConfig cfg{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()};
+            cfg.reverse = reverse;
+            CarLatticeSearch search(fc, std::make_shared<const CarLattice>(cfg));
+            std::mt19937 rng(seed * 7 + unsigned(reverse));
+            for (int k = 0; k < 4; ++k)
+            {
+                CarLatticeQuery q;
+                q.start = randomFree(fc, rng);
+                q.goal = randomFree(fc, rng);
+                q.goalYawTolerance = 0;
+                q.reversePenalty = 1.5;
+                q.cuspPenalty = 1.0;
+                if (k % 2)
+                {
+                    q.shoot = false;
+                    q.goalYawTolerance = -1;
+                    q.inGoal = [&](const Pose2 &p) { return std::hypot(p.x - q.goal.x, p.y - q.goal.y) <= 0.15; };
+                }
+                LengthCost cost;
+                const CarLatticeResult lazy = search.run(q, cost, [] { return false; });
+                CarLatticeQuery checked = q;
+                checked.lazyChecks = false;
+                const CarLatticeResult eager = search.run(checked, cost, [] { return false; });
+                ASSERT_EQ(lazy.outcome, eager.outcome) << "seed " << seed << " query " << k;
+                EXPECT_EQ(lazy.exact, eager.exact);
+                EXPECT_EQ(lazy.expanded, eager.expanded) << "seed " << seed << " query " << k;
+                EXPECT_EQ(lazy.cost, eager.cost) << "seed " << seed << " query " << k;
+                ASSERT_EQ(lazy.path.size(), eager.path.size());
+                for (std::size_t n = 0; n < lazy.path.size(); ++n) ASSERT_LT(test::poseError(lazy.path[n], eager.path[n]), 1e-12);
+                EXPECT_GE(lazy.states, eager.states);  // (blocked motions' ends are states too)
+                ++compared;
+                exact += lazy.exact;
+            }
+        }
+    }
+    EXPECT_EQ(compared, 40);
+    EXPECT_GE(exact, 25);
+}

@@ -1,7 +1,8 @@
 /// @file test_obstacle_heuristic.cpp
 /// @brief ObstacleHeuristic (the car lattice's 2D distance, resumed on demand towards a target)
 /// against a plain Dijkstra over the same graph: its guide, its resumption and its per-node
-/// tests (asked once, all axes at once) change the order of work, never a distance.
+/// tests (asked once, all axes at once) change the order of work, never a distance; its
+/// lowerBound() never exceeds one.
 #include "gridcar/planners/search/ObstacleHeuristic.h"
 
 #include <gtest/gtest.h>
@@ -88,7 +89,7 @@ std::vector<double> dijkstra(const Graph &g, const std::vector<std::array<int, 2
 
 TEST(ObstacleHeuristic, ResumedDistancesAreDijkstrasForEveryNodeAndOrder)
 {
-    int compared = 0, unreachable = 0;
+    int compared = 0, unreachable = 0, informative = 0;
     for (int headings : {8, 16})
         for (unsigned seed = 1; seed <= 6; ++seed)
         {
@@ -134,9 +135,16 @@ TEST(ObstacleHeuristic, ResumedDistancesAreDijkstrasForEveryNodeAndOrder)
             for (std::size_t n : order)
             {
                 const int i = int(n % std::size_t(g.ni)) + g.i0, j = int(n / std::size_t(g.ni)) + g.j0;
-                const double got = h.distance(i, j);
                 // a node the car does not fit at is unreachable for the heuristic
                 const double expect = g.at(i, j) ? want[n] : kInf;
+                // the bound that resumes nothing: never above the distance, and the distance
+                // itself once the node is closed
+                const double below = h.lowerBound(i, j);
+                if (below == kInf) EXPECT_EQ(expect, kInf) << i << "," << j;
+                else EXPECT_LE(below, expect * (1 + 1e-12)) << headings << " seed " << seed << " node " << i << "," << j;
+                informative += below > 0 && below < kInf;
+                const double got = h.distance(i, j);
+                if (got < kInf) EXPECT_EQ(h.lowerBound(i, j), got);
                 if (expect == kInf)
                 {
                     EXPECT_EQ(got, kInf) << i << "," << j;
@@ -149,4 +157,5 @@ TEST(ObstacleHeuristic, ResumedDistancesAreDijkstrasForEveryNodeAndOrder)
         }
     EXPECT_GT(compared, 10000);
     EXPECT_GT(unreachable, 1000);
+    EXPECT_GT(informative, 1000);
 }

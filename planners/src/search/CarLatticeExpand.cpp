@@ -6,6 +6,7 @@
 #include "gridcar/core/Angles.h"
 #include "gridcar/planners/search/CarHeuristics.h"
 #include "gridcar/planners/search/CurveTable.h"
+#include "gridcar/planners/search/LazyAStar.h"
 
 #include <atomic>
 #include <algorithm>
@@ -72,10 +73,24 @@ struct CarExpander
         const double hp = bounds.position(p, S.use2d_ ? S.h2d_->distance(i, j) : -1.0, tb);
         return hp == kInf ? hp : hp + bounds.turning(p);
     }
-    double heuristic(std::uint32_t s) const
+    double heuristic(std::uint32_t s)
     {
+        const bool keep = s < hKept.size();  // (lazyAstar()'s states: their h kept)
+        if (keep && !std::isnan(hKept[s])) return hKept[s];
         const auto k = S.unpack(S.states_.key(s));
-        return hAt(S.pose_[s], k.i, k.j, k.h);
+        const double h = hAt(S.pose_[s], k.i, k.j, k.h);
+        if (keep) hKept[s] = h;
+        return h;
+    }
+    /// A lower bound of hAt() that resumes no search: the 2D distance's
+    /// ObstacleHeuristic::lowerBound() in place of its distance (the bounds grow with it).
+    double hBelow(const Pose2 &lat, int i, int j, int h) const
+    {
+        if (!S.query_.aim) return 0.0;
+        const Pose2 p = S.worldPose(lat);
+        const double tb = table.active() ? cost.minCostPerMetre() * table(i, j, h) : 0.0;
+        const double hp = bounds.position(p, S.use2d_ ? S.h2d_->lowerBound(i, j) : -1.0, tb);
+        return hp == kInf ? hp : hp + bounds.turning(p);
     }
     bool isGoal(std::uint32_t s)
     {
@@ -96,6 +111,34 @@ struct CarExpander
     }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit)
+    {
+        generate<false>(s, emit);
+    }
+    /// lazyAstar()'s: the motions unchecked, @p edge the primitive's index.
+    template <class Emit>
+    void lazySuccessors(std::uint32_t s, Emit &&emit)
+    {
+        generate<true>(s, emit);
+    }
+    bool edgeFree(std::uint32_t parent, std::uint32_t next, std::uint32_t edge) const
+    {
+        (void)next;
+        const auto k = S.unpack(S.states_.key(parent));
+        const Pose2 &at = S.pose_[parent];
+        return S.primitiveFree(at, S.worldPose(at), S.lattice_->primitives(k.h)[edge]);
+    }
+    void accept(std::uint32_t next, std::uint32_t parent, std::uint32_t edge)
+    {
+        const auto k = S.unpack(S.states_.key(parent));
+        S.prim_[next] = std::int16_t(edge);
+        S.gear_[next] = S.lattice_->primitives(k.h)[edge].reverse ? -1 : 1;
+    }
+    /// The heuristic of each state, kept (lazyAstar() asks it for every motion into a state).
+    std::vector<double> hKept;
+    /// Successors of @p s: with Lazy, unchecked (a node lattice's states have their node's
+    /// pose, whichever motion reaches them, so nothing but the primitive is recorded).
+    template <bool Lazy, class Emit>
+    void generate(std::uint32_t s, Emit &emit)
     {
         const auto k = S.unpack(S.states_.key(s));
         const Pose2 at = S.pose_[s];  // a copy: intern() below may grow pose_
@@ -138,7 +181,8 @@ struct CarExpander
             if (seen != StateInterner::kNone && S.space_.closed(seen)) continue;
             double step = cached && !sampled ? stepOf(*cached) : stepOf(cost.minCostPerMetre() * prim.length);
             if (!(gs + step < gSeen)) continue;
-            if (!S.primitiveFree(at, from, prim)) continue;
+            if constexpr (!Lazy)
+                if (!S.primitiveFree(at, from, prim)) continue;
             if (sampled)
             {
                 // the world samples are made only where the cost needs them (the motion check
@@ -150,15 +194,28 @@ struct CarExpander
                 step = stepOf(base);
                 if (!(gs + step < gSeen)) continue;
             }
-            const double hn = hAt(end, ni, nj, nh);
-            if (hn == kInf) continue;
-            const std::uint32_t id = seen != StateInterner::kNone ? seen : S.intern(ni, nj, nh);
-            emit(id, step, [this, id, p, hn, gear, end] {
-                S.prim_[id] = std::int16_t(p);
-                S.gear_[id] = gear;
-                S.pose_[id] = end;
-                return hn;
-            });
+            if constexpr (Lazy)
+            {
+                const std::uint32_t id = seen != StateInterner::kNone ? seen : S.intern(ni, nj, nh);
+                if (hKept.size() <= id) hKept.resize(std::max<std::size_t>(2 * hKept.size(), id + 1), std::nan(""));
+                // the exact h if known, else a bound that costs no 2D search (lazyAstar()
+                // computes the exact one when the entry comes up)
+                const double hn = std::isnan(hKept[id]) ? hBelow(end, ni, nj, nh) : hKept[id];
+                if (hn == kInf) continue;
+                emit(id, step, hn, std::uint32_t(p));
+            }
+            else
+            {
+                const double hn = hAt(end, ni, nj, nh);
+                if (hn == kInf) continue;
+                const std::uint32_t id = seen != StateInterner::kNone ? seen : S.intern(ni, nj, nh);
+                emit(id, step, [this, id, p, hn, gear, end] {
+                    S.prim_[id] = std::int16_t(p);
+                    S.gear_[id] = gear;
+                    S.pose_[id] = end;
+                    return hn;
+                });
+            }
         }
     }
 };
@@ -252,11 +309,19 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     std::vector<std::uint32_t> starts;
     for (int h = 0; h < lattice_->headings(); ++h)
         if (q.freeStartHeading ? col_->poseFree(nodePose(0, 0, h)) : h == 0) starts.push_back(intern(0, 0, h));
+    // motions checked when used (lazyAstar()) where that changes nothing but the work: on a
+    // node lattice (a state's pose is its node's) with costs known before the check
+    const bool lazy = q.lazyChecks && !cost.customPriority() && !lattice_->hybrid() && cost.shapeOnly() && !(q.layer && q.layerWeight > 0);
     SearchResult res;
     if (cost.customPriority())
     {
         PriorityExpander ex{CarExpander(*this, cost)};
         res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
+    }
+    else if (lazy)
+    {
+        CarExpander ex(*this, cost);
+        res = lazyAstar(space_, starts, ex, cancelled, progress, 15u);
     }
     else
     {

@@ -148,6 +148,22 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
     return false;
 }
 
+double ObstacleHeuristic::lowerBound(int i, int j) const
+{
+    if (!inBox(i, j)) return kInf;
+    const Node &x = nodes_[idx(i, j)];
+    if (x.stamp == epoch_)
+    {
+        if (x.state & kClosed) return x.g;
+        if ((x.state & kAsked) && !(x.state & kFree)) return kInf;
+    }
+    if (stopped_) return -1.0;
+    if (heap_.empty()) return kInf;
+    const double di = i - ti_, dj = j - tj_;
+    // (less a rounding's worth: the key and the guide were summed in another order)
+    return std::max(0.0, (heap_.front().f - cell_ * std::sqrt(di * di + dj * dj)) * (1.0 - 1e-12));
+}
+
 double ObstacleHeuristic::distance(int i, int j)
 {
     if (!inBox(i, j)) return kInf;

@@ -97,6 +97,10 @@ struct CarLatticeQuery
     /// reference nodes round the goal; the table kept across runs) instead of computed at
     /// every state; a hybrid lattice (whose states are not nodes) then has no curve bound.
     bool curveTable{false};
+    /// Motions checked when the search is about to use them (lazyAstar()) rather than when
+    /// generated, where that changes nothing but the work (a node lattice, costs known
+    /// before the check: the same states closed with the same costs, ties apart).
+    bool lazyChecks{true};
     /// The map's cost layer (OccupancyGrid::cost(), 0..252) and its weight: a motion costs
     /// layerWeight x (mean cost of its poses / 252) x its length more, in metres converted by
     /// the cost model (costPerMetreOfPenalty()). Null or 0: the layer is not used.
@@ -146,7 +150,9 @@ struct ShortcutReport
  * its pose); collision is checked against the map's own cells at every sampled pose with the
  * rectangle grown by CarLattice::margin() (so the swept motion is certified), mostly by the
  * distance field's disc cover (FootprintChecker); or, on a SpaceCollision, by the OMPL
- * application's own validity checker at every sampled pose.
+ * application's own validity checker at every sampled pose. Where a motion's cost is known
+ * before its check (CarLatticeQuery::lazyChecks), a motion is checked only when its entry comes
+ * off the open list (lazyAstar(): the same search, most motions never checked).
  *
  * Heuristic: max(Euclidean distance x the cost model's least cost per metre, ObstacleHeuristic
  * distance (edges weighted by the cost model's nodeWeight()) / ratio - seed radius), where ratio >= 1 is the largest ratio of the 2D graph's

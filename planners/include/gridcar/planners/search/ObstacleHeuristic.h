@@ -57,6 +57,12 @@ public:
     /// Shortest distance (m) from node (i, j) to the goal; +inf when unreachable or off the box;
     /// -1 when the search was cancelled before it knew (the caller falls back to a bound).
     double distance(int i, int j);
+    /// A lower bound of distance(i, j) that resumes nothing: a closed node's distance; +inf for
+    /// a node off the box or known not traversable, or any node not closed once the search is
+    /// exhausted; else what the search's progress proves (with its consistent Euclidean guide
+    /// every node whose distance + guide is below the open list's least key is closed, so an
+    /// open node's distance is at least that key minus its guide), at least 0; -1 after a cancel.
+    double lowerBound(int i, int j) const;
     /// Edge weights: an edge costs its length x min(weight(a), weight(b)) (default 1). Weights
     /// must be >= 1: the search's own Euclidean guide assumes it.
     void setWeight(std::function<double(int, int)> weight) { weight_ = std::move(weight); }
