@@ -10,6 +10,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 using namespace gridcar;
@@ -196,4 +197,7 @@ TEST(CarCollision, HeuristicStandingTestsAreTheDiscTests)
         no += !any;
     }
     EXPECT_GT(no, 50);
+    // more axes than headings set (or than the answer's 32 bits) is a caller's error
+    EXPECT_THROW(col.axesStanding(1.0, 1.0, 17), std::invalid_argument);
+    EXPECT_THROW(col.axesStanding(1.0, 1.0, -1), std::invalid_argument);
 }

@@ -20,8 +20,21 @@ bool CarCollision::fitsAtSomeHeading(double x, double y, int steps) const
     return false;
 }
 
+namespace
+{
+/// axesStanding()'s answer has a bit per axis: at most 32, and at most the headings set.
+void checkAxes(int axes, std::size_t headings)
+{
+    if (axes < 0 || axes > 32 || std::size_t(axes) > headings)
+        throw std::invalid_argument("CarCollision::axesStanding: " + std::to_string(axes) +
+                                    " axes asked, at most 32 and at most the " + std::to_string(headings) +
+                                    " headings set (setHeadings())");
+}
+}  // namespace
+
 std::uint32_t CarCollision::axesStanding(double x, double y, int axes) const
 {
+    checkAxes(axes, 32);
     std::uint32_t m = 0;
     for (int h = 0; h < axes; ++h)
         if (mayStandOnAxis(x, y, h)) m |= std::uint32_t(1) << h;
@@ -63,6 +76,7 @@ bool FootprintCollision::mayStandOnAxis(double x, double y, int h) const
 
 std::uint32_t FootprintCollision::axesStanding(double x, double y, int axes) const
 {
+    checkAxes(axes, discs_.size());
     if (c_.discsClearAtEveryYawAt(x, y)) return axes >= 32 ? ~std::uint32_t(0) : (std::uint32_t(1) << axes) - 1;
     std::uint32_t m = 0;
     for (int h = 0; h < axes; ++h)

@@ -43,7 +43,8 @@ public:
     virtual void setHeadings(const std::vector<double> &yaws) = 0;
     /// False only if the car cannot stand at (x, y) lined up with heading @p h or its reverse.
     virtual bool mayStandOnAxis(double x, double y, int h) const = 0;
-    /// Bit h set where mayStandOnAxis(x, y, h), for h below @p axes (at most 32).
+    /// Bit h set where mayStandOnAxis(x, y, h), for h below @p axes; std::invalid_argument for
+    /// more than 32 axes (or, on gridcar's checker, more than the headings set).
     virtual std::uint32_t axesStanding(double x, double y, int axes) const;
     /// False only if the car cannot stand at (x, y) at any of the headings.
     virtual bool mayStandAt(double x, double y) const = 0;
