@@ -33,7 +33,9 @@ namespace gridcar
  * analyticExpansion()), and instead of successors():
  * - `template <class Emit> void lazySuccessors(uint32_t s, Emit &&emit)`, calling
  *   `emit(next, stepCost, hNext, edge)` for every motion not known to be blocked, hNext a value
- *   or a callable, @p edge a number the expander reads the motion back from;
+ *   or a callable giving heuristic(next) or a lower bound of it (the entry is then put back at
+ *   its exact key when it comes off, after its check), @p edge (below 2^31) a number the
+ *   expander reads the motion back from;
  * - `bool edgeFree(uint32_t parent, uint32_t next, uint32_t edge)`: the check;
  * - `void accept(uint32_t next, uint32_t parent, uint32_t edge)`: @p next is closed, reached
  *   by that motion.
