@@ -3,6 +3,7 @@
 #include "gridcar/core/Angles.h"
 #include "gridcar/map/ParkingScenes.h"
 #include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/planners/search/CarLattice.h"
 #include "gridcar/spaces/Setup.h"
 
 #include <ompl/base/ScopedState.h>
@@ -147,6 +148,15 @@ inline std::shared_ptr<OccupancyGrid> randomBlocks(unsigned seed, int cols, int 
 
 /// A 9 m x 7 m map at 0.1 m with 30 seeded random blocks (the car-lattice search tests).
 inline std::shared_ptr<OccupancyGrid> randomBlocks(unsigned seed) { return randomBlocks(seed, 90, 70, 0.1, 30, 9); }
+
+/// The car lattice of the random-block tests: 0.1 m cells, 16 headings, turns of 1.01 R_min,
+/// 5 cm between samples, reversing or not.
+inline CarLatticeConfig randomBlocksLattice(const FootprintChecker &fc, bool reverse = false)
+{
+    CarLatticeConfig cfg{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()};
+    cfg.reverse = reverse;
+    return cfg;
+}
 
 /// A random cell centre where the vehicle fits at one of 16 headings, with that heading.
 inline Pose2 randomFree(const FootprintChecker &fc, std::mt19937 &rng)

@@ -96,7 +96,7 @@ TEST(CarLatticeSearch, HeuristicIsALowerBoundForACostInOtherUnits)
         auto field = std::make_shared<DistanceField>(*g);
         FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
         auto lattice = std::make_shared<const CarLattice>(
-            CarLatticeConfig{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()});
+            test::randomBlocksLattice(fc));
         CarLatticeSearch search(fc, lattice);
         std::mt19937 rng(seed * 13);
         for (int k = 0; k < 4; ++k)
@@ -248,8 +248,7 @@ TEST(CarLatticeSearch, AShapeOnlyCostIsAskedOncePerPrimitiveAndChangesNothing)
         FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
         for (const bool clothoid : {false, true})
         {
-            CarLatticeConfig cfg{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()};
-            cfg.reverse = true;
+            CarLatticeConfig cfg = test::randomBlocksLattice(fc, true);
             if (clothoid) cfg.curvatureRate = fc.vehicle().curvatureRateLimit();
             CarLatticeSearch search(fc, std::make_shared<const CarLattice>(cfg));
             std::mt19937 rng(seed * 7 + (clothoid ? 1 : 0));
@@ -343,9 +342,7 @@ TEST(CarLatticeSearch, LazyMotionChecksChangeNothingButTheWork)
         FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
         for (bool reverse : {false, true})
         {
-            CarLatticeConfig cfg{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()};
-            cfg.reverse = reverse;
-            CarLatticeSearch search(fc, std::make_shared<const CarLattice>(cfg));
+            CarLatticeSearch search(fc, std::make_shared<const CarLattice>(test::randomBlocksLattice(fc, reverse)));
             std::mt19937 rng(seed * 7 + unsigned(reverse));
             for (int k = 0; k < 4; ++k)
             {

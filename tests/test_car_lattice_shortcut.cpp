@@ -42,9 +42,7 @@ TEST(CarLatticeSearch, ShortcutKeepsEndsAndGuaranteesAndShortens)
         FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
         for (const bool reverse : {false, true})
         {
-            CarLatticeConfig cfg{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()};
-            cfg.reverse = reverse;
-            CarLatticeSearch search(fc, std::make_shared<const CarLattice>(cfg));
+            CarLatticeSearch search(fc, std::make_shared<const CarLattice>(test::randomBlocksLattice(fc, reverse)));
             std::mt19937 rng(seed * 17 + unsigned(reverse));
             for (int k = 0; k < 5; ++k)
             {
@@ -98,7 +96,7 @@ TEST(CarLatticeSearch, ShortcutWithClothoidTurnsKeepsTheCurvatureRate)
         auto g = randomBlocks(seed);
         auto field = std::make_shared<DistanceField>(*g);
         FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
-        CarLatticeConfig cfg{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()};
+        CarLatticeConfig cfg = test::randomBlocksLattice(fc);
         cfg.curvatureRate = fc.vehicle().curvatureRateLimit();
         CarLatticeSearch search(fc, std::make_shared<const CarLattice>(cfg));
         std::mt19937 rng(seed * 31);
@@ -140,7 +138,7 @@ TEST(CarLatticeSearch, ShortcutStoppedAtOnceKeepsThePath)
     auto field = std::make_shared<DistanceField>(*g);
     FootprintChecker fc(g, field, VehicleParams::preset("paper-c-robot"));
     CarLatticeSearch search(fc, std::make_shared<const CarLattice>(
-                                    CarLatticeConfig{0.1, 16, 1.01 * fc.vehicle().minTurningRadius(), 0.05, fc.reach()}));
+                                    test::randomBlocksLattice(fc)));
     std::mt19937 rng(3);
     int tried = 0;
     for (int k = 0; k < 10 && tried < 3; ++k)

@@ -65,12 +65,16 @@ struct CarExpander
     }
     /// The heuristic at lattice-frame pose @p lat of node (i, j) at heading h (a node's pose, or
     /// a hybrid state's).
-    double hAt(const Pose2 &lat, int i, int j, int h) const
+    double hAt(const Pose2 &lat, int i, int j, int h) const { return hWith(lat, i, j, h, false); }
+    /// hAt(), or with @p below a lower bound of it that resumes no search: the 2D distance's
+    /// ObstacleHeuristic::lowerBound() in place of its distance (the bounds grow with it).
+    double hWith(const Pose2 &lat, int i, int j, int h, bool below) const
     {
         if (!S.query_.aim) return 0.0;
         const Pose2 p = S.worldPose(lat);
         const double tb = table.active() ? cost.minCostPerMetre() * table(i, j, h) : 0.0;
-        const double hp = bounds.position(p, S.use2d_ ? S.h2d_->distance(i, j) : -1.0, tb);
+        const double d2 = !S.use2d_ ? -1.0 : below ? S.h2d_->lowerBound(i, j) : S.h2d_->distance(i, j);
+        const double hp = bounds.position(p, d2, tb);
         return hp == kInf ? hp : hp + bounds.turning(p);
     }
     double heuristic(std::uint32_t s)
@@ -81,16 +85,6 @@ struct CarExpander
         const double h = hAt(S.pose_[s], k.i, k.j, k.h);
         if (keep) hKept[s] = h;
         return h;
-    }
-    /// A lower bound of hAt() that resumes no search: the 2D distance's
-    /// ObstacleHeuristic::lowerBound() in place of its distance (the bounds grow with it).
-    double hBelow(const Pose2 &lat, int i, int j, int h) const
-    {
-        if (!S.query_.aim) return 0.0;
-        const Pose2 p = S.worldPose(lat);
-        const double tb = table.active() ? cost.minCostPerMetre() * table(i, j, h) : 0.0;
-        const double hp = bounds.position(p, S.use2d_ ? S.h2d_->lowerBound(i, j) : -1.0, tb);
-        return hp == kInf ? hp : hp + bounds.turning(p);
     }
     bool isGoal(std::uint32_t s)
     {
@@ -200,7 +194,7 @@ struct CarExpander
                 if (hKept.size() <= id) hKept.resize(std::max<std::size_t>(2 * hKept.size(), id + 1), std::nan(""));
                 // the exact h if known, else a bound that costs no 2D search (lazyAstar()
                 // computes the exact one when the entry comes up)
-                const double hn = std::isnan(hKept[id]) ? hBelow(end, ni, nj, nh) : hKept[id];
+                const double hn = std::isnan(hKept[id]) ? hWith(end, ni, nj, nh, true) : hKept[id];
                 if (hn == kInf) continue;
                 emit(id, step, hn, std::uint32_t(p));
             }

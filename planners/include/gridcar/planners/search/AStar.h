@@ -37,6 +37,18 @@ struct HasAnalyticExpansion<E, std::void_t<decltype(std::declval<E &>().analytic
 {
 };
 
+/// The goal test of an expanded state: the expander's isGoal(), then its analytic expansion
+/// step if it has one (shared by astar() and lazyAstar()).
+template <class Expander>
+bool reachesGoal(Expander &ex, std::uint32_t s)
+{
+    if (ex.isGoal(s)) return true;
+    if constexpr (HasAnalyticExpansion<Expander>::value)
+        return ex.analyticExpansion(s);
+    else
+        return false;
+}
+
 /// How a search ended.
 enum class SearchOutcome
 {
@@ -149,10 +161,7 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
             bestH = h;
             res.closest = es;
         }
-        bool reached = ex.isGoal(es);
-        if constexpr (HasAnalyticExpansion<Expander>::value)
-            reached = reached || ex.analyticExpansion(es);
-        if (reached)
+        if (reachesGoal(ex, es))
         {
             res.outcome = SearchOutcome::Found;
             res.goal = es;

@@ -129,10 +129,7 @@ SearchResult lazyAstar(Space &space, const std::vector<std::uint32_t> &starts, E
             bestH = h;
             res.closest = s;
         }
-        bool reached = ex.isGoal(s);
-        if constexpr (HasAnalyticExpansion<Expander>::value)
-            reached = reached || ex.analyticExpansion(s);
-        if (reached)
+        if (reachesGoal(ex, s))
         {
             res.outcome = SearchOutcome::Found;
             res.goal = s;
