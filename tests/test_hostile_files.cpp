@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,52 @@ TEST(ImageReader, PngWithASecondHeaderChunkIsReadByItsFirst)
     {
         EXPECT_NE(std::string(e.what()).find("two-headers.yaml"), std::string::npos) << e.what();
     }
+}
+
+TEST(ImageReader, PngChunkHeaderInTheLastBytesIsRefusedBeforeAnyAllocation)
+{
+    // found by fuzz_image (tests/fuzz/regressions/fuzz_image/chunk-header-at-end-of-file): the
+    // last 9 bytes of a 107-byte PNG are an IDAT chunk's length (1152270944) and type without
+    // data or CRC; the chunk walk stopped 12 bytes before the end and let them through, and
+    // stb_image grew its data buffer to 2 GB for that length before finding nothing to read
+    const std::string b64 = "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD/1JpzAAAAFklEQVR4nGNgYGD4/wBQMgo0IDMKUH4KNCAAkZ/xGgAAABNJREFUeJxErkIKNCAAkZ/xGgAAABNJREFUeJxErkJgSURBVII=";
+    std::vector<std::uint8_t> png;
+    unsigned bits = 0, n = 0;
+    for (char c : b64)
+    {
+        const auto p = std::string("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/").find(c);
+        if (p == std::string::npos) break;
+        bits = (bits << 6) | unsigned(p);
+        if ((n += 6) >= 8) png.push_back(std::uint8_t(bits >> (n -= 8)));
+    }
+    ASSERT_EQ(png.size(), 107u);
+    const std::string path = writeFile("header-at-end.png", std::string(png.begin(), png.end()));
+    try
+    {
+        readImage(path);
+        FAIL() << "decoded a PNG whose last chunk has a header and nothing else";
+    }
+    catch (const MapLoadError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("truncated: chunk 'IDAT' declares 1152270944 bytes"), std::string::npos)
+            << e.what();
+    }
+    // the same bytes after IEND are not read (as by stb_image): a valid PNG stays readable
+    Image img;
+    img.width = 2;
+    img.height = 2;
+    img.channels = 1;
+    img.data = {0, 255, 255, 0};
+    const std::string good = gridcar::test::tmpDir() + "/tail-after-iend.png";
+    writePng(good, img);
+    std::ifstream in(good, std::ios::binary);
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    bytes.insert(bytes.end(), png.end() - 9, png.end());
+    std::ofstream(good, std::ios::binary | std::ios::trunc)
+        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+    const Image back = readImage(good);
+    EXPECT_EQ(back.data, img.data);
 }
 
 TEST(ImageReader, PngChunkLongerThanTheFileIsRefusedBeforeAnyAllocation)

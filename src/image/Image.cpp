@@ -200,13 +200,17 @@ void checkPngInflation(const std::string &path, const std::vector<std::uint8_t> 
 {
     std::vector<char> idat;
     long long w = 0, h = 0, bitsPerPixel = 8, interlaced = 0;
-    for (std::size_t i = 8; i + 12 <= png.size();)
+    // stb_image takes any 8 bytes left as a chunk's length and type (with 8-11 bytes at the end
+    // it reallocated its data buffer up to 2 GB for an IDAT chunk there: found by fuzz_image)
+    for (std::size_t i = 8; i + 8 <= png.size();)
     {
         const std::size_t len = (std::size_t(png[i]) << 24) | (std::size_t(png[i + 1]) << 16) | (std::size_t(png[i + 2]) << 8) | png[i + 3];
-        if (len > png.size() - i - 12)  // stb_image would allocate for it before noticing
+        if (std::memcmp(&png[i + 4], "IEND", 4) == 0) break;  // stb_image reads no further
+        const std::size_t after = png.size() - i - 8;  // data and CRC must fit in it
+        if (len > after || after - len < 4)  // stb_image would allocate for it before noticing
             throw MapLoadError(path, "truncated: chunk '" + std::string(reinterpret_cast<const char *>(&png[i + 4]), 4) +
-                                         "' declares " + std::to_string(len) + " bytes, the file has " +
-                                         std::to_string(png.size() - i - 12) + " after it");
+                                         "' declares " + std::to_string(len) + " bytes and a 4-byte CRC, the file has " +
+                                         std::to_string(after) + " after its header");
         const std::uint8_t *d = &png[i + 8];
         if (std::memcmp(&png[i + 4], "IHDR", 4) == 0 && len >= 13 && w == 0)  // the first, as stb_image reads it
         {
