@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (tests/fuzz) with clang in ./build-fuzz (AddressSanitizer +
-# UndefinedBehaviorSanitizer) and runs each for SECONDS (default 300; CI runs 30), starting from
-# the seed corpus in tests/fuzz/corpus plus small files of ../shared/maps when present. The
-# corpus grows in ./build-fuzz/corpus; a crash stops the script with the target's report and
-# the input in ./build-fuzz/crashes. Prints the executions of each target.
+# UndefinedBehaviorSanitizer) and runs each for SECONDS (default 300), starting from the seed
+# corpus in tests/fuzz/corpus plus small files of ../shared/maps when present. The corpus grows
+# in ./build-fuzz/corpus; a crash stops the script with the target's report and the input in
+# ./build-fuzz/crashes. Prints the executions of each target.
 #   bash scripts/fuzz.sh [SECONDS] [TARGET...]
-# GRIDCAR_FUZZ_SEED=N fixes libFuzzer's seed (scripts/test.sh uses 1, so CI replays the same
-# mutations every time); without it each run explores new ones.
+# The corpus also holds tests/fuzz/replay/TARGET.tar.gz: the inputs of earlier fuzzing runs
+# merged (libFuzzer's -merge=1) to those that reach distinct coverage; docs/reliability.md says
+# how they were made and how to refresh them.
+# SECONDS=0 replays instead: every regression input and every corpus input once, no mutation
+# (what scripts/test.sh and CI run: the same inputs every time, so the verdict cannot change
+# by chance; libFuzzer's mutations are not reproducible even with a fixed seed). Fuzzing for
+# new findings is this script with SECONDS > 0; each finding becomes a file in
+# tests/fuzz/regressions/TARGET/ and a test. GRIDCAR_FUZZ_SEED=N fixes libFuzzer's seed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-300}
@@ -28,6 +34,8 @@ for t in "${TARGETS[@]}"; do
   corpus=build-fuzz/corpus/$t
   mkdir -p "$corpus"
   cp -n tests/fuzz/corpus/"$t"/* "$corpus"/ 2>/dev/null || true
+  # inputs of earlier fuzzing runs, merged to those that reach distinct coverage
+  if [ -f tests/fuzz/replay/"$t".tar.gz ]; then tar -xzf tests/fuzz/replay/"$t".tar.gz -C "$corpus"; fi
   if [ -d ../shared/maps ]; then  # real files as seeds, the small ones (libFuzzer's inputs stay <= 64 KB)
     case $t in
       fuzz_movingai_map) find ../shared/maps -name '*.map' -size -64k -exec cp -n {} "$corpus"/ \; ;;
@@ -44,10 +52,16 @@ for t in "${TARGETS[@]}"; do
       echo "[fuzz] $t: a regression input fails again" >&2; exit 1; }
     echo "[fuzz] $t: $(ls tests/fuzz/regressions/"$t" | wc -l) regression input(s) pass"
   fi
-  echo "[fuzz] $t for ${SECONDS_EACH} s"
   seed=()
   if [ -n "${GRIDCAR_FUZZ_SEED:-}" ]; then seed=(-seed="$GRIDCAR_FUZZ_SEED"); fi
-  if ! ./build-fuzz/tests/fuzz/$t "$corpus" "${seed[@]}" -max_total_time="$SECONDS_EACH" -max_len=65536 -timeout=10 \
+  if [ "$SECONDS_EACH" = "0" ]; then
+    echo "[fuzz] $t: replaying its corpus ($(ls "$corpus" | wc -l) inputs)"
+    limit=(-runs=0)
+  else
+    echo "[fuzz] $t for ${SECONDS_EACH} s"
+    limit=(-max_total_time="$SECONDS_EACH")
+  fi
+  if ! ./build-fuzz/tests/fuzz/$t "$corpus" "${seed[@]}" "${limit[@]}" -max_len=65536 -timeout=10 \
       -rss_limit_mb=2048 -malloc_limit_mb=1024 -artifact_prefix=build-fuzz/crashes/$t- -print_final_stats=1 \
       > "$log" 2>&1; then
     tail -n 60 "$log"
