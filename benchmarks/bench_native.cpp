@@ -151,10 +151,12 @@ std::string labelOf(const std::string &name, const PlannerParams &p)
     return s;
 }
 
-/// One query of @p planner; fills @p row.
+/// One query of @p planner; fills @p row and says in @p driven how the simulation's drive of an
+/// exact path ended ("driven" or the outcome and its reason).
 QueryResult runOne(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &s, const Pose2 &t,
-                   double limit, bool goalYaw, int repeat, Row &row)
+                   double limit, bool goalYaw, int repeat, Row &row, std::string &driven)
 {
+    driven = "not driven";
     // the pairs have no goal yaw unless --goal-yaw gives them the one they fit at; repeated,
     // the least time (a shared machine's noise only ever adds time; the searches are the same)
     QueryResult r = runQuery(setup, planner, s, t, limit, /*freeGoalHeading=*/!goalYaw);
@@ -173,7 +175,9 @@ QueryResult runOne(GridSetup &setup, const ompl::base::PlannerPtr &planner, cons
         row.drive.push_back(drivingTime(r.path, setup.checker->vehicle()));
         if (r.drivability.drivable) ++row.drivable;
         // the path driven by paper C's follower in the kinematic simulation
-        if (drivePath(r.path, *setup.checker, Scenario()).outcome == DriveResult::Outcome::Reached) ++row.reached;
+        const DriveResult d = drivePath(r.path, *setup.checker, Scenario());
+        if (d.outcome == DriveResult::Outcome::Reached) ++row.reached;
+        driven = d.outcome == DriveResult::Outcome::Reached ? "driven" : DriveResult::outcomeName(d.outcome) + ": " + d.reason;
     }
     return r;
 }
@@ -205,11 +209,12 @@ void nativeMap(const Options &o)
             for (std::size_t k = 0; k < pairs.size(); ++k)
             {
                 const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), t = withFittingYaw(*setup.checker, pairs[k].second);
-                const QueryResult r = runOne(setup, planner, s, t, o.limit, o.goalYaw, o.repeat, row);
-                std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f -> %.2f,%.2f): %s %.3f s, %llu expansions, %s\n", row.label.c_str(),
-                             k, s.x, s.y, t.x, t.y, r.status.asString().c_str(), r.seconds,
+                std::string driven;
+                const QueryResult r = runOne(setup, planner, s, t, o.limit, o.goalYaw, o.repeat, row, driven);
+                std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f -> %.2f,%.2f): %s %.3f s, %llu expansions, %s, %s\n",
+                             row.label.c_str(), k, s.x, s.y, t.x, t.y, r.status.asString().c_str(), r.seconds,
                              static_cast<unsigned long long>(r.expanded),
-                             r.drivability.drivable ? "drivable" : r.drivability.reason.c_str());
+                             r.drivability.drivable ? "drivable" : r.drivability.reason.c_str(), driven.c_str());
                 if (name == "improved-astar" && params[0].second == "integral" && int(k) < o.bitstarPairs && !r.path.empty() &&
                     r.status == ompl::base::PlannerStatus::EXACT_SOLUTION)
                 {
@@ -272,8 +277,10 @@ void campus(const Options &o)
     {
         auto planner = configurePlanner(setup.ss->getSpaceInformation(), {name, params, true, false});
         Row row{labelOf(name, params)};
+        std::string driven;
         for (const auto &[s0, t0] : pairs)
-            runOne(setup, planner, withFittingYaw(*setup.checker, s0), withFittingYaw(*setup.checker, t0), o.limit, false, 1, row);
+            runOne(setup, planner, withFittingYaw(*setup.checker, s0), withFittingYaw(*setup.checker, t0), o.limit, false, 1,
+                   row, driven);
         rows.push_back(row);
     }
     std::printf("\n### embedded campus (0.298 m), paper-i, %zu pairs 20-150 m\n\n", pairs.size());
