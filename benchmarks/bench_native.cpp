@@ -211,8 +211,10 @@ void nativeMap(const Options &o)
                 const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), t = withFittingYaw(*setup.checker, pairs[k].second);
                 std::string driven;
                 const QueryResult r = runOne(setup, planner, s, t, o.limit, o.goalYaw, o.repeat, row, driven);
-                std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f -> %.2f,%.2f): %s %.3f s, %llu expansions, %s, %s\n",
-                             row.label.c_str(), k, s.x, s.y, t.x, t.y, r.status.asString().c_str(), r.seconds,
+                // poses as gridcar plan takes them (--start x,y,yaw_deg): a query a user can run again
+                std::fprintf(stderr, "  %s pair %zu (%.2f,%.2f,%.1f -> %.2f,%.2f,%.1f): %s %.3f s, %llu expansions, %s, %s\n",
+                             row.label.c_str(), k, s.x, s.y, s.yaw * 180 / M_PI, t.x, t.y, t.yaw * 180 / M_PI,
+                             r.status.asString().c_str(), r.seconds,
                              static_cast<unsigned long long>(r.expanded),
                              r.drivability.drivable ? "drivable" : r.drivability.reason.c_str(), driven.c_str());
                 if (name == "improved-astar" && params[0].second == "integral" && int(k) < o.bitstarPairs && !r.path.empty() &&
