@@ -264,8 +264,10 @@ Tally runPlanner(const Options &o, const Area &area, GridSetup &setup, const std
                         }
                     }
                 }
-                std::fprintf(stderr, "  %s %s %s pair %zu (%.2f, %.2f -> %.2f, %.2f)%s: %s, %.1f s, path %.1f m\n", area.name.c_str(),
-                             area.vehicle.c_str(), label.c_str(), k, s.x, s.y, g.x, g.y, m ? " (pedestrian)" : "",
+                // the start yaw in degrees, as gridcar drive --start x,y,yaw takes it
+                std::fprintf(stderr, "  %s %s %s pair %zu (%.2f, %.2f, %.1f deg -> %.2f, %.2f)%s: %s, %.1f s, path %.1f m\n",
+                             area.name.c_str(), area.vehicle.c_str(), label.c_str(), k, s.x, s.y, s.yaw * 180 / M_PI, g.x,
+                             g.y, m ? " (pedestrian)" : "",
                              DriveResult::outcomeName(d.outcome).c_str(), d.drivingTime, r.metrics.length);
             }
         }
