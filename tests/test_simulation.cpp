@@ -1,5 +1,6 @@
 #include "gridcar/sim/Simulation.h"
 
+#include "gridcar/core/Angles.h"
 #include "gridcar/core/Errors.h"
 #include "gridcar/spaces/Setup.h"
 #include "gridcar/bench/PlanQuery.h"
@@ -232,4 +233,36 @@ TEST(Simulation, AFastCarBlockedAtAPinchPointBrakesClearOfIt)
     const DriveResult d = drivePath(r.path, *s.checker, Scenario());
     EXPECT_NE(d.outcome, DriveResult::Outcome::Collided) << d.reason;
     EXPECT_EQ(d.outcome, DriveResult::Outcome::Reached) << d.reason;
+}
+
+TEST(Simulation, APathThatCirclesIsDrivenRoundItsCircleNotAcrossIt)
+{
+    // a forward route that turns a full circle before going on (as a search may turn a car
+    // round), for every radius from the vehicle's R_min up: where the circle closes, the path
+    // runs on from the point where it entered it. The follower projected the car on the
+    // nearest point up to 12 m ahead, so a car a little outside the circle as it began to
+    // turn was projected past it and cut across (bench_native, paper I's car, paper mode,
+    // pair 10: it then arrived beside the goal at the wrong heading). The car drives the circle
+    for (const char *vehicle : {"paper-c-robot", "paper-i"})
+        for (double f : {1.05, 1.3, 2.0})
+        {
+            GridSetup s = road(60.0, 16.0, vehicle);
+            const double R = f * s.checker->vehicle().minTurningRadius();
+            const double y0 = s.grid->cellCenterY(s.grid->height() / 2) - R;
+            std::vector<Pose2> path = straight(4.0, 20.0, y0, 0.05);
+            const int n = int(2 * M_PI * R / 0.05);
+            for (int k = 1; k < n; ++k)
+            {
+                const double a = 2 * M_PI * k / n;  // a left turn round the centre (20, y0 + R)
+                path.push_back({20.0 + R * std::sin(a), y0 + R - R * std::cos(a), wrapAngle(a)});
+            }
+            for (const Pose2 &p : straight(20.0, 40.0, y0, 0.05)) path.push_back(p);
+            const DriveResult r = drivePath(path, *s.checker, Scenario(), FollowerParams());
+            const std::string what = std::string(vehicle) + ", R " + std::to_string(R) + " m";
+            ASSERT_EQ(r.outcome, DriveResult::Outcome::Reached) << what << ": " << r.reason;
+            double highest = -1e9;  // round the circle: near its top at some point
+            for (const auto &t : r.trajectory) highest = std::max(highest, t.y);
+            EXPECT_GT(highest, y0 + 1.5 * R) << what << ": the car cut across the circle";
+            EXPECT_GT(r.distanceDriven, 0.9 * (36.0 + 2 * M_PI * R)) << what << ": driven " << r.distanceDriven;
+        }
 }

@@ -49,13 +49,18 @@ public:
     }
 
     /// Projects the vehicle on the path (nearest point on segments near the last one, never far
-    /// back); returns the cross-track distance.
+    /// back); returns the cross-track distance. The scan stops where the path has turned by
+    /// more than 270 degrees since the current segment: where a path turns a circle and comes
+    /// back past the car, the later pass is the path still to drive, not where the car is
+    /// (projected there, a car a little outside a circle as it began to turn cut across it).
+    /// A corner or a hairpin (up to 180 degrees) the car cuts is still caught up with.
     double project(const VehicleState &st)
     {
         const auto &p = path_.pts;
-        double best = kInf, bestS = sProj_;
+        double best = kInf, bestS = sProj_, turned = 0.0;
         for (std::size_t i = seg_; i + 1 < p.size() && path_.cum[i] <= sProj_ + 3.0 * (prm_.lookaheadMin + 2.0); ++i)
         {
+            if (i > seg_ && std::abs(turned += wrapAngle(path_.heading[i] - path_.heading[i - 1])) > 1.5 * M_PI) break;
             const double ax = p[i].x, ay = p[i].y, bx = p[i + 1].x, by = p[i + 1].y;
             const double len2 = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
             const double f = len2 > 0 ? std::clamp(((st.x - ax) * (bx - ax) + (st.y - ay) * (by - ay)) / len2, 0.0, 1.0) : 0.0;

@@ -107,7 +107,9 @@ struct DriveResult
  * @brief Drives @p path with paper C's potential-field follower in the kinematic simulation.
  *
  * Each step: the via-point is the point a look-ahead distance (lookaheadMin + lookaheadTime x v)
- * ahead of the vehicle's projection on the path, except that the path's next corner (a turning
+ * ahead of the vehicle's projection on the path (the nearest point from the last projection on,
+ * not beyond the point where the path has turned by 270 degrees: a circle in the path is driven
+ * round, not cut across), except that the path's next corner (a turning
  * point turning by more than 10 degrees) is the via-point until the vehicle is within half the
  * look-ahead of it (paper C: corners as successive sub-goals). Attractive force
  * F_att = xi (q_via - q), saturated at xi x look-ahead; repulsive force from the static map
