@@ -23,6 +23,21 @@ std::string writeFile(const std::string &name, const std::string &content)
     std::ofstream(path, std::ios::binary) << content;
     return path;
 }
+
+/// @p png written to @p name must be refused by readImage with a MapLoadError saying @p reason.
+void expectPngRefused(const std::string &name, const std::vector<std::uint8_t> &png, const std::string &reason)
+{
+    const std::string path = writeFile(name, std::string(png.begin(), png.end()));
+    try
+    {
+        readImage(path);
+        ADD_FAILURE() << name << ": decoded, expected \"" << reason << "\"";
+    }
+    catch (const MapLoadError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+    }
+}
 }  // namespace
 
 TEST(RosMap, ErrorMessagesNeverEchoRawBytes)
@@ -54,18 +69,7 @@ TEST(ImageReader, PngWhoseDataInflatesPastItsHeaderIsRefusedWithoutAllocating)
     // declaring 243 x 3 pixels, for which stb_image allocated 1.3 GB: its IDAT chunk declares
     // 1291845651 bytes (first refused by the inflation check, now by the chunk-length check)
     const std::vector<std::uint8_t> png{0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0xf3, 0x00, 0x00, 0x00, 0x03, 0x08, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x4d, 0x00, 0x00, 0x13, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x60, 0xf8, 0xf7, 0x8f, 0x01, 0x88, 0x81, 0xe4, 0x59, 0x20, 0x05, 0x00, 0x3c, 0xcf, 0x08, 0x32, 0x5b, 0xd3, 0xfc, 0xf4, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
-    const std::string path = gridcar::test::tmpDir() + "/bomb.png";
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char *>(png.data()), std::streamsize(png.size()));
-    try
-    {
-        readImage(path);
-        FAIL() << "decoded a PNG whose data does not match its header";
-    }
-    catch (const MapLoadError &e)
-    {
-        EXPECT_NE(std::string(e.what()).find("truncated: chunk 'IDAT' declares 1291845651 bytes"), std::string::npos)
-            << e.what();
-    }
+    expectPngRefused("bomb.png", png, "truncated: chunk 'IDAT' declares 1291845651 bytes");
 }
 
 TEST(ImageReader, PngWithASecondHeaderChunkIsReadByItsFirst)
@@ -95,43 +99,20 @@ TEST(ImageReader, PngChunkHeaderInTheLastBytesIsRefusedBeforeAnyAllocation)
     // last 9 bytes of a 107-byte PNG are an IDAT chunk's length (1152270944) and type without
     // data or CRC; the chunk walk stopped 12 bytes before the end and let them through, and
     // stb_image grew its data buffer to 2 GB for that length before finding nothing to read
-    const std::string b64 = "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD/1JpzAAAAFklEQVR4nGNgYGD4/wBQMgo0IDMKUH4KNCAAkZ/xGgAAABNJREFUeJxErkIKNCAAkZ/xGgAAABNJREFUeJxErkJgSURBVII=";
-    std::vector<std::uint8_t> png;
-    unsigned bits = 0, n = 0;
-    for (char c : b64)
-    {
-        const auto p = std::string("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/").find(c);
-        if (p == std::string::npos) break;
-        bits = (bits << 6) | unsigned(p);
-        if ((n += 6) >= 8) png.push_back(std::uint8_t(bits >> (n -= 8)));
-    }
-    ASSERT_EQ(png.size(), 107u);
-    const std::string path = writeFile("header-at-end.png", std::string(png.begin(), png.end()));
-    try
-    {
-        readImage(path);
-        FAIL() << "decoded a PNG whose last chunk has a header and nothing else";
-    }
-    catch (const MapLoadError &e)
-    {
-        EXPECT_NE(std::string(e.what()).find("truncated: chunk 'IDAT' declares 1152270944 bytes"), std::string::npos)
-            << e.what();
-    }
+    const std::vector<std::uint8_t> png{0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x02, 0x08, 0x02, 0x00, 0x00, 0x00, 0xff, 0xd4, 0x9a, 0x73, 0x00, 0x00, 0x00, 0x16, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x60, 0x60, 0x60, 0xf8, 0xff, 0x00, 0x50, 0x32, 0x0a, 0x34, 0x20, 0x33, 0x0a, 0x50, 0x7e, 0x0a, 0x34, 0x20, 0x00, 0x91, 0x9f, 0xf1, 0x1a, 0x00, 0x00, 0x00, 0x13, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x44, 0xae, 0x42, 0x0a, 0x34, 0x20, 0x00, 0x91, 0x9f, 0xf1, 0x1a, 0x00, 0x00, 0x00, 0x13, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x44, 0xae, 0x42, 0x60, 0x49, 0x44, 0x41, 0x54, 0x82};
+    expectPngRefused("header-at-end.png", png, "truncated: chunk 'IDAT' declares 1152270944 bytes");
     // the same bytes after IEND are not read (as by stb_image): a valid PNG stays readable
     Image img;
     img.width = 2;
     img.height = 2;
     img.channels = 1;
     img.data = {0, 255, 255, 0};
-    const std::string good = gridcar::test::tmpDir() + "/tail-after-iend.png";
+    const std::string good = gridcar::test::tmpDir() + "/ends-at-iend.png";
     writePng(good, img);
     std::ifstream in(good, std::ios::binary);
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    in.close();
-    bytes.insert(bytes.end(), png.end() - 9, png.end());
-    std::ofstream(good, std::ios::binary | std::ios::trunc)
-        .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
-    const Image back = readImage(good);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    bytes.append(png.end() - 9, png.end());
+    const Image back = readImage(writeFile("tail-after-iend.png", bytes));
     EXPECT_EQ(back.data, img.data);
 }
 
@@ -140,15 +121,5 @@ TEST(ImageReader, PngChunkLongerThanTheFileIsRefusedBeforeAnyAllocation)
     // found by fuzz_image (tests/fuzz/regressions/fuzz_image/chunk-longer-than-file): an 83-byte
     // PNG whose second IDAT chunk declares 838 MB made stb_image allocate 1 GB for it
     const std::vector<std::uint8_t> png{0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x02, 0x08, 0x02, 0x00, 0x00, 0x00, 0xff, 0xd4, 0x9a, 0x73, 0x00, 0x00, 0x00, 0x16, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0x60, 0x60, 0x60, 0xf8, 0xff, 0x00, 0x50, 0x32, 0x0a, 0x34, 0x49, 0x48, 0x44, 0x52, 0x35, 0x35, 0x0a, 0x27, 0x20, 0x32, 0x35, 0x34, 0x20, 0x32, 0x00, 0x00, 0x00, 0x49, 0x44, 0x41, 0x54, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
-    const std::string path = writeFile("long-chunk.png", std::string(png.begin(), png.end()));
-    try
-    {
-        readImage(path);
-        FAIL() << "decoded a PNG whose chunk runs past the end of the file";
-    }
-    catch (const MapLoadError &e)
-    {
-        EXPECT_NE(std::string(e.what()).find("truncated: chunk 'IDAT' declares 838860800 bytes"), std::string::npos)
-            << e.what();
-    }
+    expectPngRefused("long-chunk.png", png, "truncated: chunk 'IDAT' declares 838860800 bytes");
 }
