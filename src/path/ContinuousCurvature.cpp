@@ -5,6 +5,7 @@
 #include "gridcar/core/Angles.h"
 #include "gridcar/path/Cusps.h"
 #include "detail/CurvatureStretch.h"
+#include "detail/Steps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -148,7 +149,7 @@ std::vector<Pose2> fitStretch(const Piece &p, std::size_t a, std::size_t b, doub
     for (std::size_t i = a; i < b; ++i) turn += wrapAngle(p.pts[i + 1].yaw - p.pts[i].yaw);
     // the limits are checked every 4 cm (a quintic's curvature varies over metres), the
     // written poses then come from the same table
-    const int m = std::clamp(int(std::ceil(stretch / 0.04)), 32, 5000);
+    const int m = std::clamp(stepsFor(stretch, 0.04), 32, 5000);
     std::vector<double> u(std::size_t(m) + 1), len(std::size_t(m) + 1, 0.0), yaw(std::size_t(m) + 1);
     const double kLimit = o.maxCurvature * (1.0 + 1e-4), rLimit = 0.97 * o.maxCurvatureRate;
     double qturn = 0;
@@ -174,7 +175,7 @@ std::vector<Pose2> fitStretch(const Piece &p, std::size_t a, std::size_t b, doub
     }
     if (std::abs(qturn - turn) > 0.02) return {};  // wound the other way
     if (len.back() > stretch * (1.0 + o.maxLengthGrowth) + 1e-3) return {};  // longer than allowed
-    const int count = std::max(1, int(std::ceil(len.back() / o.step)));
+    const int count = std::max(1, stepsFor(len.back(), o.step));
     std::vector<Pose2> out;
     std::size_t j = 0;
     for (int i = 1; i < count; ++i)
@@ -219,7 +220,7 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
         const double need = 0.95 * std::abs(p.k[v] - p.k[v - 1]) / o.maxCurvatureRate;
         double lo = p.s[v] - need, hi = p.s[v] + need;
         std::size_t w = v + 1;
-        for (; w + 1 < n && p.s[w] <= hi; ++w)
+        for (; w + 1 < n && p.s[w] <= hi + kArcTie; ++w)
             if (p.bad[w]) hi = std::max(hi, p.s[w] + 0.95 * std::abs(p.k[w] - p.k[w - 1]) / o.maxCurvatureRate);
         ++r.stretches;
         bool placed = false;
@@ -227,8 +228,8 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
         {
             const double c = 0.5 * (lo + hi), h = 0.5 * (hi - lo) * f;
             std::size_t a = v - 1, b = v + 1;
-            while (a > writer.done() && p.s[a] > c - h) --a;
-            while (b + 1 < n && p.s[b] < c + h) ++b;
+            while (a > writer.done() && p.s[a] > c - h + kArcTie) --a;
+            while (b + 1 < n && p.s[b] < c + h - kArcTie) ++b;
             while (a > writer.done() && p.bad[a]) --a;
             while (b + 1 < n && p.bad[b]) ++b;
             // the curvature where the stretch meets the rest of the path is kept; at a piece's

@@ -1,6 +1,7 @@
 #include "gridcar/path/PostProcess.h"
 
 #include "gridcar/core/Angles.h"
+#include "detail/Steps.h"
 
 #include <algorithm>
 #include <chrono>
@@ -144,7 +145,10 @@ void adjustAndSmooth(SmoothingResult &r, std::vector<Pose2> pts, const Footprint
                             if (!dx && !dy) continue;
                             const Pose2 cand{pts[i].x + dx * res, pts[i].y + dy * res, 0.0};
                             const double kc = cornerK(i, cand);
-                            if (kc >= bestK) continue;
+                            // lower by more than rounding: of the moves that mirror each other
+                            // (equal K but for the last bits, which differ with the map's
+                            // origin) the first in this order is kept, wherever the map lies
+                            if (kc >= bestK - 1e-9 * bestK) continue;
                             if (!legValid(checker, pts[i - 1], cand) || !legValid(checker, cand, pts[i + 1])) continue;
                             best = cand;
                             bestK = kc;
@@ -184,7 +188,7 @@ void adjustAndSmooth(SmoothingResult &r, std::vector<Pose2> pts, const Footprint
         {
             // the control polygon's length bounds the arc length: enough samples
             const double len = dist(bc.a, bc.p) + dist(bc.p, bc.c);
-            const int k = std::max(2, int(std::ceil(len / step)));
+            const int k = std::max(2, detail::stepsFor(len, step));
             for (int j = 0; j <= k; ++j) piece.push_back(bezierAt(bc, double(j) / k));
             bool ok = checker.isMotionValid(out.back(), piece.front());
             for (std::size_t j = 1; ok && j < piece.size(); ++j) ok = checker.isMotionValid(piece[j - 1], piece[j]);
@@ -201,7 +205,7 @@ void adjustAndSmooth(SmoothingResult &r, std::vector<Pose2> pts, const Footprint
             piece = {{pts[i].x, pts[i].y, hin}, {pts[i].x, pts[i].y, hout}};
         }
         for (const Pose2 &q : piece)
-            if (dist(q, out.back()) > 1e-9 || q.yaw != out.back().yaw) out.push_back(q);
+            if (dist(q, out.back()) > 1e-9 || std::abs(wrapAngle(q.yaw - out.back().yaw)) > 1e-9) out.push_back(q);
         r.corners.push_back(cr);
     }
     if (n > 1) out.push_back({last.x, last.y, heading(pts[n - 2], pts[n - 1])});

@@ -28,7 +28,7 @@ std::vector<Pose2> widenPiece(const std::vector<Pose2> &poses, bool backward, co
     for (std::size_t i = 0; i + 1 < n; ++i)
     {
         if (std::abs(p.k[i]) <= 1e-9) continue;
-        if (!turns.empty() && p.s[i] - p.s[turns.back().second] < kGap)
+        if (!turns.empty() && p.s[i] - p.s[turns.back().second] < kGap - kArcTie)
             turns.back().second = i + 1;
         else
             turns.push_back({i, i + 1});
@@ -54,8 +54,8 @@ std::vector<Pose2> widenPiece(const std::vector<Pose2> &poses, bool backward, co
         for (const double f : {2.0, 1.4, 1.0, 0.6, 0.3})
         {
             std::size_t a = first, b = last;
-            while (a > w.done() && p.s[a - 1] >= std::max(before, p.s[first] - f * len)) --a;
-            while (b + 1 < n && p.s[b + 1] <= std::min(after, p.s[last] + f * len)) ++b;
+            while (a > w.done() && p.s[a - 1] >= std::max(before, p.s[first] - f * len) - kArcTie) --a;
+            while (b + 1 < n && p.s[b + 1] <= std::min(after, p.s[last] + f * len) + kArcTie) ++b;
             if (a == first && b == last && f < 2.0) break;  // no room: the narrower tries are the same
             for (const double e : {1.0, 0.8, 1.25, 0.65})
             {

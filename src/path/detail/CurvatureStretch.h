@@ -17,6 +17,12 @@
 
 namespace gridcar::detail
 {
+/// Metres within which two arc lengths along a piece count as equal where a stretch's window
+/// is laid: a lattice path's straights and turns are whole cells long, so window edges and
+/// vertices fall together, and the last bits of a sum (which differ with the map's origin)
+/// must not decide which vertices a stretch takes.
+constexpr double kArcTie = 1e-9;
+
 /// One piece (one direction of motion) being smoothed: its poses with the yaw of motion.
 struct Piece
 {
