@@ -70,6 +70,7 @@ CarLatticeQuery queryFor(const Pose2 &start, bool freeStartHeading, const CarSea
             q.aim = false;
             q.shoot = false;
             q.inGoal = goal.satisfied;
+            q.goalDistance = goal.distance;
             break;
     }
     return q;

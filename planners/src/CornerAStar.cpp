@@ -36,7 +36,13 @@ struct CornerExpander
     double hAt(int c, int r) const
     {
         const GridQuery &q = f.query();
-        return q.goalIsState ? f.octile(c, r, q.goalCol, q.goalRow) : 0.0;
+        return q.goalKnown ? f.towardGoal(f.octile(c, r, q.goalCol, q.goalRow)) : 0.0;
+    }
+    double closeness(std::uint32_t s) const
+    {
+        int c, r, d;
+        states.decode(s, c, r, d);
+        return f.closeness(c, r, d);
     }
     double heuristic(std::uint32_t s) const
     {

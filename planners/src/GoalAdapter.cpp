@@ -35,11 +35,18 @@ ompl::base::PlannerStatus GoalAdapter::read(const ompl::base::Goal *goal, bool m
         setPose(scratch_, p);
         return region->isSatisfied(scratch_);
     };
+    out.distance = [this, region](const Pose2 &p) {
+        setPose(scratch_, p);
+        double d = 0.0;
+        region->isSatisfied(scratch_, &d);
+        return d;
+    };
     if (const auto *pg = dynamic_cast<const PositionGoal *>(goal))
     {
         out.kind = GoalTarget::Kind::Position;
         out.pose = {pg->x(), pg->y(), pg->yaw()};
         out.yawTolerance = pg->yawTolerance();
+        out.positionTolerance = pg->positionTolerance();
         const bool ok = pg->freeHeading() ? collision.fitsAtSomeHeading(out.pose.x, out.pose.y, 72) : collision.poseFree(out.pose);
         return ok ? PlannerStatus(PlannerStatus::UNKNOWN) : invalid("the vehicle fits at no allowed heading at the goal position");
     }

@@ -12,17 +12,16 @@ struct CellExpander
     CellIndex cells;
     GridHeuristic h;
     double straight, diag;
-    int goalCol, goalRow;
-    bool goalKnown;
+    const GridQuery &q;
     double heuristicAt(int c, int r) const
     {
-        if (h == GridHeuristic::Zero || !goalKnown) return 0.0;
-        const int dx = std::abs(goalCol - c), dy = std::abs(goalRow - r);
+        if (h == GridHeuristic::Zero || !q.goalKnown) return 0.0;
+        const int dx = std::abs(q.goalCol - c), dy = std::abs(q.goalRow - r);
         switch (h)
         {
-            case GridHeuristic::Manhattan: return straight * (dx + dy);
-            case GridHeuristic::Euclidean: return straight * std::sqrt(double(dx) * dx + double(dy) * dy);
-            case GridHeuristic::Octile: return straight * std::max(dx, dy) + (diag - straight) * std::min(dx, dy);
+            case GridHeuristic::Manhattan: return f.towardGoal(straight * (dx + dy));
+            case GridHeuristic::Euclidean: return f.towardGoal(straight * std::sqrt(double(dx) * dx + double(dy) * dy));
+            case GridHeuristic::Octile: return f.towardGoal(straight * std::max(dx, dy) + (diag - straight) * std::min(dx, dy));
             default: return 0.0;
         }
     }
@@ -34,11 +33,18 @@ struct CellExpander
     }
     bool isGoal(std::uint32_t s) const
     {
-        // a goal state is one cell: compare indices (no division on the hot path)
-        if (goalKnown) return s == cells.of(goalCol, goalRow);
+        // the target cell: compare indices (no division on the hot path)
+        if (q.goalKnown && s == cells.of(q.goalCol, q.goalRow)) return true;
+        if (!q.regionTest) return false;
         int c, r;
         cells.split(s, c, r);
         return f.isGoal(c, r, -1);
+    }
+    double closeness(std::uint32_t s) const
+    {
+        int c, r;
+        cells.split(s, c, r);
+        return f.closeness(c, r, -1);
     }
     template <class Emit>
     void successors(std::uint32_t s, Emit &&emit) const
@@ -67,8 +73,7 @@ public:
     SearchResult search(GridFamily &f, const std::vector<std::uint32_t> &starts, const std::function<bool()> &cancelled,
                         std::atomic<std::uint64_t> *progress) override
     {
-        const GridQuery &q = f.query();
-        CellExpander ex{f, f.cellIndex(), h_, f.stepLength(0), f.stepLength(1), q.goalCol, q.goalRow, q.goalIsState};
+        CellExpander ex{f, f.cellIndex(), h_, f.stepLength(0), f.stepLength(1), f.query()};
         return astar(f.dense(), starts, ex, cancelled, progress);
     }
     void decode(const GridFamily &f, std::uint32_t s, int &col, int &row, int &dir) const override

@@ -3,6 +3,7 @@
 /// state to path, and the explored graph.
 #include "gridcar/planners/GridFamily.h"
 
+#include "gridcar/core/Angles.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/spaces/SE2StateSpace.h>
@@ -93,10 +94,78 @@ double GridFamily::octile(int c0, int r0, int c1, int r1) const
 
 bool GridFamily::isGoal(int col, int row, int dir) const
 {
-    if (query_.goalIsState)
-        return col == query_.goalCol && row == query_.goalRow &&
-               (query_.goalDir < 0 || dir < 0 || dir == query_.goalDir);
-    return goal_->satisfied({space_->cellCenterX(col), space_->cellCenterY(row), dir >= 0 ? Moves::yaw(dir) : 0.0});
+    if (query_.goalKnown && col == query_.goalCol && row == query_.goalRow &&
+        (dir < 0 || ((query_.goalDirs >> dir) & 1u)))
+        return true;
+    return query_.regionTest &&
+           goal_->satisfied({space_->cellCenterX(col), space_->cellCenterY(row), dir >= 0 ? Moves::yaw(dir) : 0.0});
+}
+
+double GridFamily::closeness(int col, int row, int dir) const
+{
+    if (!query_.goalKnown)
+        return goal_->distance({space_->cellCenterX(col), space_->cellCenterY(row), dir >= 0 ? Moves::yaw(dir) : 0.0});
+    const double dx = space_->cellCenterX(col) - goal_->pose.x, dy = space_->cellCenterY(row) - goal_->pose.y;
+    return dx * dx + dy * dy;
+}
+
+void GridFamily::readGoal(const GoalTarget &goal)
+{
+    goal_ = &goal;
+    if (goal.kind == GoalTarget::Kind::Region)
+    {
+        query_.regionTest = true;  // nothing to aim at: the region's own test
+        return;
+    }
+    const LatticeState gl = space_->toLattice(goal.pose.x, goal.pose.y, goal.pose.yaw);
+    query_.goalKnown = space_->inBounds(gl);
+    query_.goalCol = gl.col;
+    query_.goalRow = gl.row;
+    switch (goal.kind)
+    {
+        case GoalTarget::Kind::State:
+            if (goal.yawTolerance == 0.0) query_.goalDirs = std::uint8_t(1u << Moves::fromYaw(goal.pose.yaw));
+            break;
+        case GoalTarget::Kind::Position:
+        {
+            if (goal.yawTolerance >= 0)
+            {
+                // within the tolerance, or the direction nearest the goal's yaw
+                query_.goalDirs = std::uint8_t(1u << Moves::fromYaw(goal.pose.yaw));
+                for (int d = 0; d < 8; ++d)
+                    if (std::abs(wrapAngle(Moves::yaw(d) - goal.pose.yaw)) <= goal.yawTolerance)
+                        query_.goalDirs |= std::uint8_t(1u << d);
+            }
+            // another cell's centre is at least half a cell from the position
+            query_.regionTest = goal.positionTolerance >= 0.5 * straightStep_;
+            // a satisfying centre lies within the tolerance plus half a cell's diagonal of the
+            // target cell's: the octile and Euclidean bounds shrink by at most sqrt 2 times that
+            if (query_.regionTest) query_.goalSlack = std::sqrt(2.0) * goal.positionTolerance + straightStep_;
+            break;
+        }
+        default:  // a sampleable region: its sample's cell, and the region's own test
+            query_.regionTest = true;
+    }
+    if (!query_.goalKnown) query_.regionTest = true;
+}
+
+Pose2 GridFamily::goalPose(const GoalTarget &goal, double arrivalYaw) const
+{
+    if (goal.kind != GoalTarget::Kind::Position) return goal.pose;
+    Pose2 p{goal.pose.x, goal.pose.y, arrivalYaw};
+    if (goal.yawTolerance >= 0)
+    {
+        if (std::abs(wrapAngle(arrivalYaw - goal.pose.yaw)) > goal.yawTolerance) p.yaw = goal.pose.yaw;
+        return p;  // the goal's yaw was checked free (GoalAdapter::read())
+    }
+    // a free heading: the arrival's, else the free one of 72 nearest it (the vehicle fits at one)
+    for (int k = 0; k <= 36 && !collision_->poseFree(p); ++k)
+        for (int side : {1, -1})
+        {
+            p.yaw = wrapYaw(arrivalYaw + side * k * M_PI / 36);
+            if (collision_->poseFree(p)) break;
+        }
+    return p;
 }
 
 FamilyRun GridFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
@@ -114,15 +183,7 @@ FamilyRun GridFamily::solve(const ompl::base::SpaceInformationPtr &si, const omp
     query_.startCol = sl.col;
     query_.startRow = sl.row;
     query_.startDir = freeStartHeading ? -1 : Moves::fromYaw(start->as<ompl::base::SE2StateSpace::StateType>()->getYaw());
-    goal_ = &goal;
-    if (goal.kind == GoalTarget::Kind::State)
-    {
-        const LatticeState gl = space_->toLattice(goal.state);
-        query_.goalIsState = true;
-        query_.goalCol = gl.col;
-        query_.goalRow = gl.row;
-        query_.goalDir = goal.yawTolerance == 0.0 ? Moves::fromYaw(goal.pose.yaw) : -1;
-    }
+    readGoal(goal);
 
     const std::vector<std::uint32_t> starts = nodes_->starts(*this);
     const auto t0 = std::chrono::steady_clock::now();
@@ -139,6 +200,7 @@ FamilyRun GridFamily::solve(const ompl::base::SpaceInformationPtr &si, const omp
 
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si);
     path->append(start);
+    Pose2 last = toPose(start);
     ompl::base::State *tmp = si->allocState();
     for (std::size_t i = 1; i < states.size(); ++i)
     {
@@ -146,13 +208,30 @@ FamilyRun GridFamily::solve(const ompl::base::SpaceInformationPtr &si, const omp
         nodes_->decode(*this, states[i], c, r, d);
         nodes_->decode(*this, states[i - 1], pc, pr, pd);
         // the heading of the move into the cell (rows grow downwards)
-        setPose(tmp, {space_->cellCenterX(c), space_->cellCenterY(r), std::atan2(double(pr - r), double(c - pc))});
+        last = {space_->cellCenterX(c), space_->cellCenterY(r), std::atan2(double(pr - r), double(c - pc))};
+        setPose(tmp, last);
         path->append(tmp);
     }
-    si->freeState(tmp);
     run.end.reached = res.outcome == SearchOutcome::Found;
-    if (run.end.reached && goal.state && (states.size() > 1 || !si->equalStates(start, goal.state)))
-        path->append(goal.state);
+    if (run.end.reached)
+    {
+        int c, r, d;
+        nodes_->decode(*this, end, c, r, d);
+        const bool inTarget = query_.goalKnown && c == query_.goalCol && r == query_.goalRow;
+        if (goal.state)
+        {
+            if (states.size() > 1 || !si->equalStates(start, goal.state)) path->append(goal.state);
+        }
+        else if (inTarget && !goal.satisfied(last))
+        {
+            last = goalPose(goal, last.yaw);
+            setPose(tmp, last);
+            path->append(tmp);
+        }
+        // a region's sample may lie outside it: then the path only comes near
+        if (!goal.state) run.end.reached = goal.satisfied(last);
+    }
+    si->freeState(tmp);
     run.end.path = path;
     return run;
 }

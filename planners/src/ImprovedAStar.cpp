@@ -187,7 +187,13 @@ struct ImprovedExpander
     double hAt(int c, int r) const
     {
         const GridQuery &q = f.query();
-        return q.goalIsState ? self->heuristicAt(c, r, q.goalCol, q.goalRow) : 0.0;
+        return q.goalKnown ? f.towardGoal(self->heuristicAt(c, r, q.goalCol, q.goalRow)) : 0.0;
+    }
+    double closeness(std::uint32_t s) const
+    {
+        int c, r, d, k;
+        split(s, c, r, d, k);
+        return f.closeness(c, r, d);
     }
     double heuristic(std::uint32_t s) const
     {

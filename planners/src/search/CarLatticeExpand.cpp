@@ -86,6 +86,14 @@ struct CarExpander
         if (keep) hKept[s] = h;
         return h;
     }
+    /// Nearest the goal, for the approximate answer: the squared distance to the position
+    /// aimed at, or without aim the goal's own distance.
+    double closeness(std::uint32_t s) const
+    {
+        const Pose2 p = poseOf(s);
+        if (!S.query_.aim) return S.query_.goalDistance ? S.query_.goalDistance(p) : 0.0;
+        return (p.x - S.query_.goal.x) * (p.x - S.query_.goal.x) + (p.y - S.query_.goal.y) * (p.y - S.query_.goal.y);
+    }
     bool isGoal(std::uint32_t s)
     {
         ++expansions;

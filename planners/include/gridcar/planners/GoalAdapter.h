@@ -30,8 +30,11 @@ struct GoalTarget
     double yawTolerance{-1.0};  ///< rad: < 0 any heading, 0 exactly pose.yaw, > 0 within it
     /// The GoalState's state (Kind::State), appended to a path that reaches its cell.
     const ompl::base::State *state{nullptr};
+    double positionTolerance{0.0};  ///< m: a PositionGoal's (Kind::Position)
     /// The goal's own test at a pose (isSatisfied()), for every kind.
     std::function<bool(const Pose2 &)> satisfied;
+    /// The goal's own distance from a pose (isSatisfied()'s distance), for every kind.
+    std::function<double(const Pose2 &)> distance;
 };
 
 /**

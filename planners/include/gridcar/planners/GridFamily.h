@@ -16,6 +16,7 @@
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/PlannerTerminationCondition.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -43,9 +44,19 @@ struct GridQuery
 {
     int startCol{0}, startRow{0};
     int startDir{-1};  ///< -1: free start heading
-    bool goalIsState{false};
+    /// A cell to aim at (every goal kind but a plain region): the cell of the GoalState, of the
+    /// PositionGoal's position or of the region's sample. The heuristics measure to it, and
+    /// reaching it at an accepted arrival direction ends the search.
+    bool goalKnown{false};
     int goalCol{0}, goalRow{0};
-    int goalDir{-1};  ///< -1: any heading
+    std::uint8_t goalDirs{0xFF};  ///< arrival directions accepted in the goal cell (bit d); a
+                                  ///< node type without directions is always accepted there
+    /// The goal's own test also runs at every expanded cell's centre: regions, and a
+    /// PositionGoal whose tolerance reaches another cell's centre.
+    bool regionTest{false};
+    /// Metres taken off the heuristics (never below 0) so that they stay lower bounds to a
+    /// cell satisfying the goal that is not the target cell (a position tolerance).
+    double goalSlack{0.0};
 };
 
 class GridFamily;
@@ -95,9 +106,16 @@ struct FamilyRun
  * checker: the target cell).
  *
  * A query starts at the start state's cell and yaw (nearest of 8 directions), or any heading
- * when the start heading is free; its goal is a GoalState's cell (and heading when it must
- * match), or any other goal's own test at cell centres. The path is the cell centres, each at
- * the heading of the move into it, then the GoalState itself.
+ * when the start heading is free. Its goal is the cell of the pose the goal gives to aim at (a
+ * GoalState's, with its heading when it must match; a PositionGoal's position, with an arrival
+ * direction within its yaw tolerance or nearest its yaw; a sampleable region's sample), and
+ * for regions, and a PositionGoal whose tolerance reaches beyond its cell, also any cell whose
+ * centre satisfies the goal's own test. The path is the cell centres, each at the heading of
+ * the move into it, then, where it ends in the target cell, the goal's pose: the GoalState
+ * itself, the PositionGoal's exact position (at the arrival heading, or the goal's yaw where
+ * the arrival is outside its tolerance; the nearest free heading where the vehicle does not
+ * fit at it), the region's sample. A search that does not reach the goal returns the path to
+ * the explored cell nearest it (closeness()).
  */
 class GridFamily
 {
@@ -140,6 +158,12 @@ public:
     double octile(int c0, int r0, int c1, int r1) const;
     /// True if the cell (with arrival direction @p dir, -1 = none) satisfies the goal.
     bool isGoal(int col, int row, int dir) const;
+    /// A heuristic's distance to the target cell as a lower bound to the goal (less goalSlack).
+    double towardGoal(double h) const { return std::max(0.0, h - query_.goalSlack); }
+    /// How near the centre of a cell is to the goal, the order of the approximate answer (the
+    /// explored state nearest the goal): the squared distance to the position aimed at, or for
+    /// a plain region the goal's own distance (ompl::base::Goal::isSatisfied()'s).
+    double closeness(int col, int row, int dir) const;
     /// Cached validity of the move from (col, row) in direction d (see the class comment).
     bool moveValid(int col, int row, int d) const
     {
@@ -153,6 +177,10 @@ public:
 
 private:
     bool checkMoveUncached(int col, int row, int d) const;
+    void readGoal(const GoalTarget &goal);
+    /// The last pose of a path that reached the target cell at @p arrivalYaw: the goal's own
+    /// pose there (see the class comment).
+    Pose2 goalPose(const GoalTarget &goal, double arrivalYaw) const;
     bool fillMoveCache(int col, int row, int d) const;
 
     std::shared_ptr<const GridSE2StateSpace> space_;

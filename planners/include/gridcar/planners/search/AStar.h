@@ -26,6 +26,31 @@ struct HasPriority<E, std::void_t<decltype(std::declval<const E &>().priority(0.
 {
 };
 
+/// True if the expander defines `double closeness(std::uint32_t s) const`: how near a state
+/// is to the goal, for the approximate answer (the least is kept).
+template <class E, class = void>
+struct HasCloseness : std::false_type
+{
+};
+template <class E>
+struct HasCloseness<E, std::void_t<decltype(std::declval<const E &>().closeness(std::uint32_t(0)))>> : std::true_type
+{
+};
+
+/// The order of the approximate answer: the expander's closeness() of @p s, else its h.
+template <class E>
+double closenessOf(const E &ex, std::uint32_t s, double h)
+{
+    if constexpr (HasCloseness<E>::value)
+        return ex.closeness(s);
+    else
+    {
+        (void)ex;
+        (void)s;
+        return h;
+    }
+}
+
 /// True if the expander has an analytic expansion step (`bool analyticExpansion(uint32_t)`).
 template <class E, class = void>
 struct HasAnalyticExpansion : std::false_type
@@ -62,7 +87,9 @@ struct SearchResult
 {
     SearchOutcome outcome{SearchOutcome::Exhausted};
     std::uint32_t goal{SearchSpace::kNoParent};     ///< the goal state reached (Found)
-    std::uint32_t closest{SearchSpace::kNoParent};  ///< expanded state of least heuristic
+    /// The expanded state nearest the goal: of least closeness() where the expander defines
+    /// it, else of least heuristic.
+    std::uint32_t closest{SearchSpace::kNoParent};
     std::uint64_t expanded{0};
     std::uint64_t generated{0};
 };
@@ -85,8 +112,9 @@ struct SearchResult
  * checked); returning true ends the search Found at @p s, the expander holding the curve.
  *
  * An expander may also define `double priority(double g, double h, uint32_t s) const`: the
- * open list is then ordered by it instead of f = g + h (paper I's f = g' + h (1 + o) + s); the
- * closest state for an approximate solution is still the one of least heuristic().
+ * open list is then ordered by it instead of f = g + h (paper I's f = g' + h (1 + o) + s).
+ * The closest state for an approximate solution is the one of least `closeness(s)` where the
+ * expander defines it (the grid family: nearest the goal's position), else of least heuristic.
  * @p reopen: with an inconsistent heuristic or priority, a closed state reached again with a
  * cheaper g (by more than kReopenTolerance relative: not rounding noise) is reopened (default)
  * or left closed (a best-first search that keeps its first parent).
@@ -156,9 +184,9 @@ SearchResult astar(Space &space, const std::vector<std::uint32_t> &starts, Expan
             h = ex.heuristic(es);
         else
             h = e.f() - g;
-        if (h < bestH)
+        if (const double c = closenessOf(ex, es, h); c < bestH)
         {
-            bestH = h;
+            bestH = c;
             res.closest = es;
         }
         if (reachesGoal(ex, es))

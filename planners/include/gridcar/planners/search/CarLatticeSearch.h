@@ -75,6 +75,9 @@ struct CarLatticeQuery
     /// False when `goal` is no target at all (a goal region that cannot be sampled): no
     /// heuristic then (Dijkstra order), and no shot.
     bool aim{true};
+    /// Without aim: the goal's own distance from a pose, so that an approximate answer ends at
+    /// the explored state nearest the goal (empty: at the start).
+    std::function<double(const Pose2 &)> goalDistance;
     /// Heuristic weight w >= 1 (weighted A*): the path found costs at most w x the lattice
     /// optimum when the heuristic is a lower bound; larger w, fewer expansions.
     double weight{1.0};

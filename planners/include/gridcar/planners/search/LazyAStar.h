@@ -123,10 +123,9 @@ SearchResult lazyAstar(Space &space, const std::vector<std::uint32_t> &starts, E
         space.close(s);
         ++res.expanded;
         if (progress) progress->store(res.expanded, std::memory_order_relaxed);
-        const double h = e.order.f() - e.g;
-        if (h < bestH)
+        if (const double c = closenessOf(ex, s, e.order.f() - e.g); c < bestH)
         {
-            bestH = h;
+            bestH = c;
             res.closest = s;
         }
         if (reachesGoal(ex, s))
