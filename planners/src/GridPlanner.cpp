@@ -10,6 +10,8 @@
 #include <ompl/util/Console.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace gridcar
@@ -186,11 +188,24 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
         else if (replaced && end.reached && checker_)
         {
             // a smoothed path is a drivable solution only if the independent check says so
-            const std::string why = smoothedPathVerdict(toPoses(*end.path), *checker_, ptc);
+            const std::vector<Pose2> poses = toPoses(*end.path);
+            const std::string why = smoothedPathVerdict(poses, *checker_, ptc);
             if (!why.empty()) end.notExactBecause = "the smoothed path is not drivable: " + why;
+            else end.notExactBecause = endsOffGoal(goal_, poses.back());
         }
     }
     return support_.finish(std::move(end));
+}
+
+std::string GridPlanner::endsOffGoal(const GoalTarget &goal, const Pose2 &end)
+{
+    // a GoalState whose heading need not be matched: its position
+    const bool positionOnly = goal.kind == GoalTarget::Kind::State && goal.yawTolerance < 0;
+    if (positionOnly ? std::hypot(end.x - goal.pose.x, end.y - goal.pose.y) <= 1e-6 : goal.satisfied(end)) return "";
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "the smoothed path ends at (%.3f, %.3f) heading %.1f deg, off the goal (%.3f, %.3f) heading %.1f deg",
+                  end.x, end.y, end.yaw * 180.0 / M_PI, goal.pose.x, goal.pose.y, goal.pose.yaw * 180.0 / M_PI);
+    return buf;
 }
 
 void GridPlanner::getPlannerData(ompl::base::PlannerData &data) const

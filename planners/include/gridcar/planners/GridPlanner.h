@@ -252,6 +252,10 @@ protected:
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).
     void markNotExact(const std::string &why) { notExactBecause_ = why; }
+    /// "" when a smoothed path's last pose @p end still meets @p goal (a GoalState's heading
+    /// only where it is to be matched), else why not (paper I's smoothing ends on the last
+    /// leg's heading).
+    static std::string endsOffGoal(const GoalTarget &goal, const Pose2 &end);
     /// Declares `headings` and `heuristic_weight` (for the planners that search the car lattice).
     void declareCarLatticeParams();
     /// Size of the lattice cells of the grid family (after setup()).
