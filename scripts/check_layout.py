@@ -5,7 +5,9 @@
 2. no C++ source file is above 400 lines;
 3. no function is above 120 lines (brace matching on code with comments and strings blanked);
 4. no layer includes a header of a layer above it (core < spaces < planners < benchmarks <
-   apps: the link order of the data flow).
+   apps: the link order of the data flow);
+5. the core's modules (include/gridcar/<module>/ with src/<module>/) include each other without
+   a cycle, so that each can be read, tested and moved after the ones it uses.
 
 Usage: check_layout.py SOURCE_DIR. Prints every violation; exit status 1 if there is any.
 """
@@ -78,6 +80,41 @@ def long_functions(path):
     return found
 
 
+def module_cycles(root):
+    """Cycles among the core's modules, each as 'a -> b -> ... -> a' with where each edge is made."""
+    edges = {}  # (from, to) -> first "file:line" making it
+    for base in ("include/gridcar", "src"):
+        for path in sorted((root / base).rglob("*")):
+            if path.suffix not in (".h", ".hpp", ".cpp") or not path.is_file():
+                continue
+            parts = path.relative_to(root / base).parts
+            if len(parts) < 2:
+                continue
+            for i, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+                m = re.match(r'\s*#\s*include\s*[<"]gridcar/(\w+)/', line)
+                if m and m.group(1) != parts[0]:
+                    edges.setdefault((parts[0], m.group(1)), f"{path.relative_to(root).as_posix()}:{i}")
+    graph = {}
+    for a, b in edges:
+        graph.setdefault(a, set()).add(b)
+    cycles, seen = [], set()
+
+    def walk(node, trail):
+        for nxt in sorted(graph.get(node, ())):
+            if nxt in trail:
+                cycle = trail[trail.index(nxt):] + [nxt]
+                key = frozenset(zip(cycle, cycle[1:]))
+                if key not in seen:
+                    seen.add(key)
+                    cycles.append(" -> ".join(cycle) + " (" + ", ".join(edges[e] for e in zip(cycle, cycle[1:])) + ")")
+            elif len(trail) < 12:
+                walk(nxt, trail + [nxt])
+
+    for start in sorted(graph):
+        walk(start, [start])
+    return cycles
+
+
 def main():
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
     problems = []
@@ -103,6 +140,8 @@ def main():
                     m = re.match(r'\s*#\s*include\s*[<"]gridcar/(\w+)/', line)
                     if m and m.group(1) in above:
                         problems.append(f"{rel}:{i}: includes a header of a layer above it: {line.strip()}")
+    for c in module_cycles(root):
+        problems.append(f"the core's modules include each other in a cycle: {c}")
     for p in problems:
         print(p)
     print(f"check_layout: {len(problems)} problem(s)")

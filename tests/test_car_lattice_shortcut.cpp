@@ -6,7 +6,7 @@
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/map/CampusGenerator.h"
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/planners/ImprovedAStar.h"

@@ -1,7 +1,7 @@
 // OMPL's car spaces in gridcar set-ups (spaces/CarSpaces.h): the motion validator along the
 // curves, OMPL's planners returning drivable Reeds-Shepp / Dubins paths (checked by the
-// independent dense check), cusps in the metrics and the driving time (path/Cusps.h).
-#include "gridcar/path/Cusps.h"
+// independent dense check), cusps in the metrics and the driving time (core/Cusps.h).
+#include "gridcar/core/Cusps.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/bench/PlanQuery.h"

@@ -7,7 +7,7 @@
 #include "gridcar/core/Angles.h"
 #include "gridcar/curves/ClothoidTurns.h"
 #include "gridcar/path/ContinuousCurvature.h"
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"

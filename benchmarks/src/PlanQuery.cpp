@@ -1,6 +1,6 @@
 #include "gridcar/bench/PlanQuery.h"
 
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 
 #include "gridcar/core/Errors.h"
 #include "gridcar/planners/GridPlanner.h"

@@ -1,7 +1,7 @@
 #include "gridcar/image/Image.h"
 
 #include "gridcar/core/Files.h"
-#include "gridcar/map/OccupancyGrid.h"
+#include "gridcar/core/Limits.h"
 
 #include <cctype>
 #include <climits>

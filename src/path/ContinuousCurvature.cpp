@@ -3,7 +3,7 @@
 #include "gridcar/path/ContinuousCurvature.h"
 
 #include "gridcar/core/Angles.h"
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 #include "detail/CurvatureStretch.h"
 #include "detail/Steps.h"
 

@@ -3,7 +3,7 @@
 
 #include "sim/Follower.h"
 
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 
 #include <algorithm>
 #include <cmath>

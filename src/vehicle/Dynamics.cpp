@@ -1,6 +1,6 @@
 #include "gridcar/vehicle/Dynamics.h"
 
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 
 #include "gridcar/core/Angles.h"
 

@@ -2,6 +2,7 @@
 /// @file OccupancyGrid.h
 /// @brief Occupancy grid in the ROS map_server convention.
 
+#include "gridcar/core/Limits.h"
 #include "gridcar/core/Pose2.h"
 
 #include <cstddef>
@@ -21,9 +22,6 @@ enum class CellState : std::uint8_t
     Unknown = 2
 };
 
-/// Largest number of cells a map may have (about 1.1 GB of cell data would be absurd for a
-/// planner on this project's machines); readers refuse bigger headers before allocating.
-constexpr std::size_t kMaxMapCells = std::size_t(1) << 28;  // 268 M cells, e.g. 16384 x 16384
 /// Cell sizes a map may have, metres: from a tenth of a millimetre to a kilometre.
 constexpr double kMinResolution = 1e-4, kMaxResolution = 1e3;
 /// Largest distance of a map's origin from 0 and largest side of a map, metres (10 000 km):

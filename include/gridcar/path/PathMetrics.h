@@ -3,7 +3,7 @@
 /// @brief Path measures shared by the CLI, the benchmarks and the simulation.
 
 #include "gridcar/collision/FootprintChecker.h"
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 
 #include <vector>
 

@@ -6,7 +6,7 @@
 
 #include "gridcar/core/Angles.h"
 #include "gridcar/path/ContinuousCurvature.h"
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 
 #include <algorithm>
 #include <cmath>

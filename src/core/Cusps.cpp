@@ -1,4 +1,4 @@
-#include "gridcar/path/Cusps.h"
+#include "gridcar/core/Cusps.h"
 
 #include <cmath>
 
