@@ -112,6 +112,50 @@ TEST(PlannerRegistry, AParameterThatDoesNotActIsRefusedWithTheReason)
     }
 }
 
+// A switch takes each way a switch is written (OMPL's bool parameters take 0 / 1, YAML writes
+// true / false): reverse=1 used to be refused where shortcut=1 was taken.
+TEST(PlannerRegistry, ASwitchTakesOneZeroTrueFalseOnOff)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    GridSetup s = makeGridSetup(wallsMap(), VehicleParams::preset("paper-c-robot"));
+    auto p = makePlanner(s.ss->getSpaceInformation(), "corner-astar");
+    for (const char *name : {"reverse", "shortcut"})
+    {
+        const std::vector<std::pair<std::string, std::string>> words{
+            {"1", "on"}, {"true", "on"}, {"True", "on"}, {"ON", "on"}, {"on", "on"},
+            {"0", "off"}, {"false", "off"}, {"FALSE", "off"}, {"Off", "off"}, {"auto", "auto"}};
+        for (const auto &[word, meaning] : words)
+        {
+            EXPECT_TRUE(p->params().setParam(name, word)) << name << "=" << word;
+            EXPECT_EQ(p->params()[name].getValue(), meaning) << name << "=" << word;
+        }
+        // anything else is refused, and the last value stays
+        EXPECT_FALSE(p->params().setParam(name, "yes please"));
+        EXPECT_FALSE(p->params().setParam(name, "2"));
+        EXPECT_EQ(p->params()[name].getValue(), "auto");
+        try
+        {
+            auto *g = static_cast<GridPlanner *>(p.get());
+            if (std::string(name) == "reverse") g->setReverse("sometimes");
+            else g->setShortcut("sometimes");
+            ADD_FAILURE() << "accepted";
+        }
+        catch (const std::invalid_argument &e)
+        {
+            EXPECT_NE(std::string(e.what()).find("'sometimes'"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("1, true"), std::string::npos) << e.what();
+        }
+    }
+    // and the switch acts: reverse=true reverses like reverse=on
+    const ob::SpaceInformationPtr &si = s.ss->getSpaceInformation();
+    auto a = configurePlanner(si, {"corner-astar", {{"reverse", "true"}}, false, false});
+    auto b = configurePlanner(si, {"corner-astar", {{"reverse", "on"}}, false, false});
+    const double la = lengthOf(s, a);
+    ASSERT_GT(la, 0);
+    EXPECT_DOUBLE_EQ(la, lengthOf(s, b));
+    EXPECT_TRUE(std::static_pointer_cast<GridPlanner>(a)->reversing());
+}
+
 TEST(PlannerRegistry, AWeightActsTheSameSetBeforeOrAfterSetup)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);

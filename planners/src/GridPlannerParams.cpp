@@ -9,11 +9,26 @@
 #include <ompl/base/spaces/DubinsStateSpace.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
 namespace gridcar
 {
+namespace
+{
+/// "on" / "off" for each way a switch is written (1 / 0, true / false, on / off, as OMPL's own
+/// bool parameters and YAML take them; any case), else @p value as it is.
+std::string switchWord(const std::string &value)
+{
+    std::string v = value;
+    std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (v == "1" || v == "true" || v == "on") return "on";
+    if (v == "0" || v == "false" || v == "off") return "off";
+    return value;
+}
+}  // namespace
+
 void GridPlanner::declareCarLatticeParams()
 {
     declareParam<int>("headings", this, &GridPlanner::setLatticeHeadings, &GridPlanner::latticeHeadings, "8,16");
@@ -38,9 +53,10 @@ void GridPlanner::declareCarLatticeParams()
 
 void GridPlanner::setShortcut(const std::string &mode)
 {
-    const std::string m = mode == "1" ? "on" : mode == "0" ? "off" : mode;
+    const std::string m = switchWord(mode);
     if (m != "auto" && m != "on" && m != "off")
-        throw std::invalid_argument(getName() + ": shortcut must be auto, on or off, got '" + printable(mode) + "'");
+        throw std::invalid_argument(getName() + ": shortcut must be auto, on (1, true) or off (0, false), got '" +
+                                    printable(mode) + "'");
     params_.shortcut = m;
     parameterSet("shortcut");
 }
@@ -85,7 +101,7 @@ double GridPlanner::curvatureRate() const
 
 bool GridPlanner::matchGoalHeading() const
 {
-    return setParams_.count("match_goal_heading") ? params_.matchGoalHeading : usesCarLattice();
+    return params_.matchGoalHeading.value_or(usesCarLattice());
 }
 
 void GridPlanner::setCurveHeuristic(const std::string &mode)
@@ -116,10 +132,12 @@ void GridPlanner::setPrimitives(const std::string &p)
     parameterSet("primitives");
 }
 
-void GridPlanner::setReverse(const std::string &r)
+void GridPlanner::setReverse(const std::string &value)
 {
+    const std::string r = switchWord(value);
     if (r != "off" && r != "on" && r != "auto")
-        throw std::invalid_argument(getName() + ": reverse must be off, on or auto, got '" + printable(r) + "'");
+        throw std::invalid_argument(getName() + ": reverse must be off (0, false), on (1, true) or auto, got '" +
+                                    printable(value) + "'");
     params_.reverse = r;
     parameterSet("reverse");
 }
@@ -153,8 +171,7 @@ bool GridPlanner::reversing() const
 
 double GridPlanner::cuspPenalty() const
 {
-    if (setParams_.count("cusp_penalty")) return params_.cuspPenalty;
-    return gearChangeDistance(vehicle());
+    return params_.cuspPenalty ? *params_.cuspPenalty : gearChangeDistance(vehicle());
 }
 
 void GridPlanner::setAllowCornerCutting(bool v)

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <memory>
 #include <set>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,9 +28,9 @@ struct GridPlannerParams
 {
     bool allowCornerCutting{false};  ///< `allow_corner_cutting` (grid lattice)
     bool freeStartHeading{false};    ///< `free_start_heading`
-    /// `match_goal_heading` when set; unset, true on the car lattice (a goal pose is reached
-    /// with its yaw) and false on the grid lattice (the papers' searches end at the goal cell)
-    bool matchGoalHeading{false};
+    /// `match_goal_heading`; unset (the default): true on the car lattice (a goal pose is
+    /// reached with its yaw), false on the grid lattice (the papers' searches end at the goal cell)
+    std::optional<bool> matchGoalHeading;
     double turningRadius{0.0};       ///< `turning_radius`, m; 0 = automatic
     double maxMemoryMb{8192.0};      ///< `max_memory_mb`; 0 = none
     double latticeCell{0.0};         ///< `lattice_cell`, m; 0 = automatic
@@ -37,7 +38,7 @@ struct GridPlannerParams
     double heuristicWeight{1.1};     ///< `heuristic_weight` (car lattice), >= 1
     std::string reverse{"off"};      ///< `reverse` (car lattice): off, on, auto (on but on a Dubins space)
     double reversePenalty{2.0};      ///< `reverse_penalty` (car lattice): factor on reversed cost, >= 1
-    double cuspPenalty{0.0};         ///< `cusp_penalty` (car lattice), m; used when set, else from the vehicle
+    std::optional<double> cuspPenalty;  ///< `cusp_penalty` (car lattice), m; unset: the vehicle's gearChangeDistance()
     /// `curve_heuristic` (car lattice): off, table or exact: max in the Reeds-Shepp / Dubins
     /// length to the goal pose, read from a CurveTable or computed at every state
     std::string curveHeuristic{"off"};
