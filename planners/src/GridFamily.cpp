@@ -168,6 +168,16 @@ Pose2 GridFamily::goalPose(const GoalTarget &goal, double arrivalYaw) const
     return p;
 }
 
+bool GridFamily::lastLegFree(const Pose2 &from, const Pose2 &to) const
+{
+    // along the leg at its own heading (both ends included), as the lattice's moves are
+    // checked; the goal pose itself at its yaw (GoalAdapter::read() and goalPose() chose it free)
+    const double dx = to.x - from.x, dy = to.y - from.y;
+    if (std::hypot(dx, dy) <= 1e-9) return collision_->poseFree(to);
+    const double h = std::atan2(dy, dx);
+    return collision_->segmentFree({from.x, from.y, h}, {to.x, to.y, h}) && collision_->poseFree(to);
+}
+
 FamilyRun GridFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
                             bool freeStartHeading, const GoalTarget &goal, const std::function<bool()> &cancelled,
                             std::atomic<std::uint64_t> *progress)
@@ -220,13 +230,22 @@ FamilyRun GridFamily::solve(const ompl::base::SpaceInformationPtr &si, const omp
         const bool inTarget = query_.goalKnown && c == query_.goalCol && r == query_.goalRow;
         if (goal.state)
         {
-            if (states.size() > 1 || !si->equalStates(start, goal.state)) path->append(goal.state);
+            if (states.size() > 1 || !si->equalStates(start, goal.state))
+            {
+                // the last leg, from the cell's centre to the goal pose, checked as a move is
+                run.end.reached = lastLegFree(last, goal.pose);
+                if (run.end.reached) path->append(goal.state);
+            }
         }
         else if (inTarget && !goal.satisfied(last))
         {
-            last = goalPose(goal, last.yaw);
-            setPose(tmp, last);
-            path->append(tmp);
+            const Pose2 end = goalPose(goal, last.yaw);
+            if (lastLegFree(last, end))
+            {
+                last = end;
+                setPose(tmp, last);
+                path->append(tmp);
+            }
         }
         // a region's sample may lie outside it: then the path only comes near
         if (!goal.state) run.end.reached = goal.satisfied(last);

@@ -181,6 +181,9 @@ private:
     /// The last pose of a path that reached the target cell at @p arrivalYaw: the goal's own
     /// pose there (see the class comment).
     Pose2 goalPose(const GoalTarget &goal, double arrivalYaw) const;
+    /// The straight leg from the last cell's centre to the goal's pose is free (the body along
+    /// it at the leg's heading, and at the goal pose): else the path ends at the centre.
+    bool lastLegFree(const Pose2 &from, const Pose2 &to) const;
     bool fillMoveCache(int col, int row, int d) const;
 
     std::shared_ptr<const GridSE2StateSpace> space_;
