@@ -223,7 +223,7 @@ TEST(CarLattice, BadConfigurationsThrow)
     EXPECT_FALSE(p->params().setParam("headings", "72"));
     EXPECT_FALSE(p->params().setParam("lattice_cell", "-1"));
     EXPECT_TRUE(p->params().setParam("headings", "8"));
-    EXPECT_EQ(p->latticeHeadings(), 8);
+    EXPECT_EQ(p->carSettings().headings, 8);
 }
 
 /// The grown-rectangle test, its distance-field-only proof and the plain test against a

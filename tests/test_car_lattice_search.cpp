@@ -305,12 +305,12 @@ TEST(CarLatticeSearch, TheCurveTableBoundCutsExpansionsOnParkingQueries)
             q.start = pq.start;
             q.goal = pq.goal;
             q.goalYawTolerance = 0;
-            q.reversePenalty = 2.0;
+            q.settings.reversePenalty = 2.0;
             q.cuspPenalty = 2.0;
             LengthCost cost;
             const CarLatticeResult a = search.run(q, cost, [] { return false; });
             q.curveWithin = 10 * cfg.turnRadius;
-            q.curveTable = true;
+            q.settings.curveHeuristic = CurveHeuristic::Table;
             const CarLatticeResult b = search.run(q, cost, [] { return false; });
             ASSERT_TRUE(a.exact && b.exact) << pq.name;
             const std::size_t kept = search.curveTable()->computed();
@@ -350,7 +350,7 @@ TEST(CarLatticeSearch, LazyMotionChecksChangeNothingButTheWork)
                 q.start = randomFree(fc, rng);
                 q.goal = randomFree(fc, rng);
                 q.goalYawTolerance = 0;
-                q.reversePenalty = 1.5;
+                q.settings.reversePenalty = 1.5;
                 q.cuspPenalty = 1.0;
                 if (k % 2)
                 {

@@ -50,7 +50,7 @@ TEST(CarLatticeSearch, ShortcutKeepsEndsAndGuaranteesAndShortens)
                 q.start = randomFree(fc, rng);
                 q.goal = randomFree(fc, rng);
                 q.goalYawTolerance = 0;
-                q.reversePenalty = 2.0;
+                q.settings.reversePenalty = 2.0;
                 q.cuspPenalty = 1.0;
                 LengthCost cost;
                 CarLatticeResult r = search.run(q, cost, [] { return false; });
@@ -196,16 +196,17 @@ TEST(CarLatticeSearch, ShortcutParameterModes)
     GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
     auto planner = std::dynamic_pointer_cast<GridPlanner>(makePlanner(s.ss->getSpaceInformation(), "corner-astar"));
     ASSERT_TRUE(planner);
-    EXPECT_EQ(planner->shortcut(), "auto");
+    auto &params = planner->params();
+    EXPECT_EQ(planner->carSettings().shortcut, AutoSwitch::Auto);
     EXPECT_FALSE(planner->shortcutting());
-    planner->setReverse("on");
+    ASSERT_TRUE(params.setParam("reverse", "on"));
     EXPECT_TRUE(planner->shortcutting());
-    planner->setShortcut("0");
-    EXPECT_EQ(planner->shortcut(), "off");
+    ASSERT_TRUE(params.setParam("shortcut", "0"));
+    EXPECT_EQ(planner->carSettings().shortcut, AutoSwitch::Off);
     EXPECT_FALSE(planner->shortcutting());
-    planner->setReverse("off");
-    planner->setShortcut("1");
+    ASSERT_TRUE(params.setParam("reverse", "off"));
+    ASSERT_TRUE(params.setParam("shortcut", "1"));
     EXPECT_TRUE(planner->shortcutting());
-    EXPECT_THROW(planner->setShortcut("yes"), std::invalid_argument);
-    EXPECT_EQ(planner->shortcut(), "on");
+    EXPECT_FALSE(params.setParam("shortcut", "yes"));  // refused, the setting kept
+    EXPECT_EQ(params.getParam("shortcut")->getValue(), "on");
 }

@@ -373,10 +373,10 @@ TEST(ContinuousCurvature, PlannersReturnPathsWithinTheRate)
     GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-i"));
     auto p = std::dynamic_pointer_cast<GridPlanner>(makePlanner(s.ss->getSpaceInformation(), "corner-astar"));
     ASSERT_TRUE(p);
-    EXPECT_THROW(p->setCurvatureRate(-1.0), std::invalid_argument);
-    EXPECT_THROW(p->setCurvatureRate(NAN), std::invalid_argument);
-    p->setCurvatureRate(0.7);
+    EXPECT_FALSE(p->params().setParam("curvature_rate", "-1"));
+    EXPECT_FALSE(p->params().setParam("curvature_rate", "nan"));
+    ASSERT_TRUE(p->params().setParam("curvature_rate", "0.7"));
     EXPECT_DOUBLE_EQ(p->curvatureRate(), 0.7);
-    p->setContinuousCurvature(false);
+    ASSERT_TRUE(p->params().setParam("continuous_curvature", "false"));
     EXPECT_DOUBLE_EQ(p->curvatureRate(), 0.0);
 }

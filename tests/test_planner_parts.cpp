@@ -97,8 +97,10 @@ TEST(PlannerParts, LengthOnlyCarLatticeFromParts)
     GridSetup s = test::carSetup(SpaceKind::SE2);
     test::setPlainQuery(*s.ss, 10, 30, 50, 30);
     auto parts = std::make_shared<LengthLattice>(s.ss->getSpaceInformation());
-    parts->setContinuousCurvature(false);
-    parts->setShortcut("off");
+    CarLatticeSettings asSearched = parts->carSettings();
+    asSearched.continuousCurvature = false;
+    asSearched.shortcut = AutoSwitch::Off;
+    parts->setCarSettings(asSearched);
     s.ss->setPlanner(parts);
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
     const std::vector<Pose2> path = toPoses(s.ss->getSolutionPath());
@@ -117,7 +119,7 @@ TEST(PlannerParts, LengthOnlyCarLatticeFromParts)
     corner->setWeight45(0);
     corner->setWeight90(0);
     corner->setWeight135(0);
-    corner->setShortcut("off");
+    ASSERT_TRUE(corner->params().setParam("shortcut", "off"));
     s.ss->setPlanner(corner);
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_DOUBLE_EQ(corner->lastCost(), partsCost);

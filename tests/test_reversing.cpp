@@ -122,12 +122,16 @@ TEST(Reversing, PenaltiesAndWhereTheyAct)
     p->setup();  // the vehicle is the checker's from set-up on
     EXPECT_DOUBLE_EQ(p->cuspPenalty(), gearChangeDistance(VehicleParams::preset("paper-i")));
     EXPECT_GT(p->cuspPenalty(), 0.5);
-    p->setCuspPenalty(3.0);
+    ASSERT_TRUE(p->params().setParam("cusp_penalty", "3"));
     EXPECT_DOUBLE_EQ(p->cuspPenalty(), 3.0);
-    EXPECT_THROW(p->setReversePenalty(0.5), std::invalid_argument);
-    EXPECT_THROW(p->setReverse("sometimes"), std::invalid_argument);
-    p->setReverse("on");
-    p->setReversePenalty(10.0);
+    ASSERT_TRUE(p->params().setParam("cusp_penalty", "auto"));  // unset again: the vehicle's
+    EXPECT_DOUBLE_EQ(p->cuspPenalty(), gearChangeDistance(VehicleParams::preset("paper-i")));
+    ASSERT_TRUE(p->params().setParam("cusp_penalty", "3"));
+    EXPECT_FALSE(p->params().setParam("reverse_penalty", "0.5"));
+    EXPECT_FALSE(p->params().setParam("reverse", "sometimes"));
+    EXPECT_DOUBLE_EQ(p->carSettings().reversePenalty, 2.0);  // refused values leave the settings as they were
+    ASSERT_TRUE(p->params().setParam("reverse", "on"));
+    ASSERT_TRUE(p->params().setParam("reverse_penalty", "10"));
     s.ss->setPlanner(p);
     test::setPlainQuery(*s.ss, 10, 30, 50, 30);
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
@@ -261,10 +265,12 @@ TEST(Reversing, TheCurveHeuristicFromItsTableOrExactKeepsEveryParkingQuerySolved
         }
     GridSetup s = makeGridSetup(deadEnd(), VehicleParams::preset("paper-i"));
     auto planner = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
-    EXPECT_EQ(planner->curveHeuristic(), "off");
-    planner->setCurveHeuristic("1");
-    EXPECT_EQ(planner->curveHeuristic(), "exact");
-    planner->setCurveHeuristic("0");
-    EXPECT_EQ(planner->curveHeuristic(), "off");
-    EXPECT_THROW(planner->setCurveHeuristic("sometimes"), std::invalid_argument);
+    auto &params = planner->params();
+    EXPECT_EQ(planner->carSettings().curveHeuristic, CurveHeuristic::Off);
+    ASSERT_TRUE(params.setParam("curve_heuristic", "1"));
+    EXPECT_EQ(planner->carSettings().curveHeuristic, CurveHeuristic::Exact);
+    ASSERT_TRUE(params.setParam("curve_heuristic", "0"));
+    EXPECT_EQ(params.getParam("curve_heuristic")->getValue(), "off");
+    EXPECT_FALSE(params.setParam("curve_heuristic", "sometimes"));
+    EXPECT_EQ(planner->carSettings().curveHeuristic, CurveHeuristic::Off);
 }

@@ -39,19 +39,10 @@ void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision>
 
 namespace
 {
-/// The lattice query for a start pose, the options and the goal target.
-CarLatticeQuery queryFor(const Pose2 &start, bool freeStartHeading, const CarSearchOptions &options, const GoalTarget &goal)
+/// @p terms aimed from @p start at the goal target.
+CarLatticeQuery queryFor(const Pose2 &start, CarLatticeQuery q, const GoalTarget &goal)
 {
-    CarLatticeQuery q;
     q.start = start;
-    q.freeStartHeading = freeStartHeading;
-    q.weight = options.weight;
-    q.reversePenalty = options.reversePenalty;
-    q.cuspPenalty = options.cuspPenalty;
-    q.curveWithin = options.curveWithin;
-    q.curveTable = options.curveTable;
-    q.layer = options.layer;
-    q.layerWeight = options.layerWeight;
     q.goal = goal.pose;
     switch (goal.kind)
     {
@@ -78,11 +69,11 @@ CarLatticeQuery queryFor(const Pose2 &start, bool freeStartHeading, const CarSea
 }  // namespace
 
 FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start,
-                           bool freeStartHeading, const CarSearchOptions &options, const GoalTarget &goal,
+                           CarLatticeQuery terms, const CarPostProcessing &post, const GoalTarget &goal,
                            const LatticeCostModel &cost,
                            const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
 {
-    const CarLatticeQuery q = queryFor(toPose(start), freeStartHeading, options, goal);
+    const CarLatticeQuery q = queryFor(toPose(start), std::move(terms), goal);
     FamilyRun run;
     const auto t0 = std::chrono::steady_clock::now();
     // a goal heading to meet: the primitive set for manoeuvres, where there is one
@@ -97,7 +88,7 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     // turns on expansion budgets that grow fourfold a round (deterministic, and at most about
     // 4/3 of each one's own expansions repeated), until one reaches the goal or all ran out;
     // an answer is kept if it reaches the goal, or if there is none yet.
-    const bool fixedEnds = goal.kind == GoalTarget::Kind::State && q.goalYawTolerance == 0 && !freeStartHeading;
+    const bool fixedEnds = goal.kind == GoalTarget::Kind::State && q.goalYawTolerance == 0 && !q.freeStartHeading;
     struct Stage
     {
         CarLatticeSearch *search;
@@ -158,12 +149,12 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         budget = budget > std::numeric_limits<std::uint64_t>::max() / 4 ? budget : 4 * budget;
     }
     // what the lattice's few headings and coarse cells leave over, taken off by free curves
-    if (r.exact && options.shortcutCurves > 0)
+    if (r.exact && post.shortcutCurves > 0)
     {
-        const ShortcutReport sr = last_->shortcut(r.path, q, cost, cancelled, options.shortcutCurves);
+        const ShortcutReport sr = last_->shortcut(r.path, q, cost, cancelled, post.shortcutCurves);
         r.cost += sr.costAfter - sr.costBefore;  // what was taken off, by the same measure
     }
-    if (r.exact && options.curvatureRate > 0 && r.path.size() > 2) smooth(options, r.path, cancelled);
+    if (r.exact && post.curvatureRate > 0 && r.path.size() > 2) smooth(post, r.path, cancelled);
     run.searchSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.expanded = r.expanded;
     run.cost = r.cost;
@@ -176,15 +167,15 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     return run;
 }
 
-void CarFamily::smooth(const CarSearchOptions &options, std::vector<Pose2> &path, const std::function<bool()> &cancelled)
+void CarFamily::smooth(const CarPostProcessing &post, std::vector<Pose2> &path, const std::function<bool()> &cancelled)
 {
     // poses no farther apart than lets a body point move the lattice's spacing, so that the
     // search's own swept-motion test certifies each replacement
     const CarLatticeConfig &cfg = last_->lattice().config();
     CurvatureSmoothingOptions o;
-    o.maxCurvature = options.maxCurvature;
-    o.maxCurvatureRate = options.curvatureRate;
-    o.step = cfg.spacing / (1.0 + cfg.reach * options.maxCurvature);
+    o.maxCurvature = post.maxCurvature;
+    o.maxCurvatureRate = post.curvatureRate;
+    o.step = cfg.spacing / (1.0 + cfg.reach * post.maxCurvature);
     o.reversing = true;
     o.cancelled = cancelled;
     o.free = [this](const std::vector<Pose2> &poses) {

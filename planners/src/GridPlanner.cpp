@@ -86,15 +86,15 @@ void GridPlanner::setup()
     tooBig_.clear();
     if (usesCarLattice())
     {
-        if (params_.reverse == "on" && onDubinsSpace())
+        if (params_.car.reverse == AutoSwitch::On && onDubinsSpace())
             throw std::invalid_argument(getName() + ": reverse=on on a Dubins space, which drives forwards only (use "
                                                     "reverse=auto or the Reeds-Shepp space)");
         // turns=auto: the lattice's clothoid turns for routes, its arcs for a goal pose to meet
         const CarLatticeConfig cfg = carLatticeConfig();
         CarLatticeConfig arcs = cfg;
         arcs.curvatureRate = 0.0;
-        const CarLatticeConfig *forPoses = params_.turns == "auto" && cfg != arcs ? &arcs : nullptr;
-        if (params_.primitives == "auto")
+        const CarLatticeConfig *forPoses = params_.car.turns == TurnShape::Auto && cfg != arcs ? &arcs : nullptr;
+        if (params_.car.primitives == PrimitiveSet::Auto)
         {
             const CarLatticeConfig hybrid = carLatticeConfig(true);
             car_.setup(cfg, collision_, &hybrid, forPoses);
@@ -154,24 +154,22 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     if (car)
     {
         const std::unique_ptr<LatticeCostModel> cost = carCost();
-        CarSearchOptions options{params_.heuristicWeight, params_.reversePenalty,
-                                 cuspPenalty() * cost->costPerMetreOfPenalty(),
-                                 curveWithin(), params_.curveHeuristic == "table", curvatureRate(),
-                                 1.0 / turningRadius()};
-        options.shortcutCurves = shortcutting() ? kShortcutCurves : 0;
-        if (params_.costLayerWeight > 0)
+        CarLatticeQuery terms;
+        terms.settings = params_.car;
+        terms.freeStartHeading = params_.freeStartHeading;
+        terms.cuspPenalty = cuspPenalty() * cost->costPerMetreOfPenalty();
+        terms.curveWithin = curveWithin();
+        if (params_.car.costLayerWeight > 0)
         {
             if (checker_ && checker_->grid().hasCosts())
-            {
-                options.layer = &checker_->grid();
-                options.layerWeight = params_.costLayerWeight;
-            }
+                terms.layer = &checker_->grid();
             else
                 OMPL_WARN("%s: cost_layer_weight is set but the map has no cost layer (a map_server map in scale or "
                           "raw mode, on gridcar's validity checker): it has no effect",
                           getName().c_str());
         }
-        run = car_.solve(si_, start, params_.freeStartHeading, options, goal_, *cost, cancelled, support_.progress());
+        const CarPostProcessing post{shortcutting() ? kShortcutCurves : 0, curvatureRate(), 1.0 / turningRadius()};
+        run = car_.solve(si_, start, std::move(terms), post, goal_, *cost, cancelled, support_.progress());
     }
     else
         run = grid_.solve(si_, start, params_.freeStartHeading, goal_, cancelled, support_.progress());

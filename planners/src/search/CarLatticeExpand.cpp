@@ -50,13 +50,13 @@ struct CarExpander
         if (S.query_.goalYawTolerance == 0 && S.query_.shoot && S.query_.curveWithin > 0)
         {
             const double R = S.lattice_->config().turnRadius;
-            if (!S.query_.curveTable)
+            if (!S.query_.curveTable())
                 bounds.curve = {S.query_.goal, R, S.lattice_->config().reverse, cost.minCostPerMetre(), S.query_.curveWithin};
             else if (const CurveTable *t = S.curveTable())
                 table = CurveTableBound(*t, S.latticePose(S.query_.goal));
         }
         bounds.useObstacle = S.use2d_;
-        bounds.weight = S.query_.weight;
+        bounds.weight = S.query_.settings.heuristicWeight;
     }
     double hNode(int i, int j) const
     {
@@ -149,7 +149,7 @@ struct CarExpander
         const bool hybrid = S.lattice_->hybrid();
         const double c = S.lattice_->cell(), ca = std::cos(at.yaw), sa = std::sin(at.yaw);
         const double gs = S.space_.g(s);
-        const bool layered = S.query_.layer && S.query_.layerWeight > 0;
+        const bool layered = S.query_.layered();
         for (std::size_t p = 0; p < prims.size(); ++p)
         {
             const LatticePrimitive &prim = prims[p];
@@ -170,7 +170,7 @@ struct CarExpander
             const bool backwards = prim.reverse != S.query_.timeReversed;
             const bool cusp = S.gear_[s] != 0 && S.gear_[s] != gear;
             const auto stepOf = [&](double base) {
-                return (backwards ? base * S.query_.reversePenalty : base) + (cusp ? S.query_.cuspPenalty : 0.0);
+                return (backwards ? base * S.query_.settings.reversePenalty : base) + (cusp ? S.query_.cuspPenalty : 0.0);
             };
             // a motion to a state it would not improve, or to one expanded already (the search
             // never reopens one: run() passes reopen=false), is dropped by the search: not
@@ -313,7 +313,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         if (q.freeStartHeading ? col_->poseFree(nodePose(0, 0, h)) : h == 0) starts.push_back(intern(0, 0, h));
     // motions checked when used (lazyAstar()) where that changes nothing but the work: on a
     // node lattice (a state's pose is its node's) with costs known before the check
-    const bool lazy = q.lazyChecks && !cost.customPriority() && !lattice_->hybrid() && cost.shapeOnly() && !(q.layer && q.layerWeight > 0);
+    const bool lazy = q.lazyChecks && !cost.customPriority() && !lattice_->hybrid() && cost.shapeOnly() && !q.layered();
     SearchResult res;
     if (cost.customPriority())
     {

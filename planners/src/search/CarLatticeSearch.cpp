@@ -266,7 +266,7 @@ namespace
 /// the band would shoot through the rest). True when @p poses' mean cost exceeds that + 8.
 bool crossesCostlierGround(const CarLatticeQuery &q, const std::vector<Pose2> &poses)
 {
-    if (!q.layer || !(q.layerWeight > 0) || poses.empty()) return false;
+    if (!q.layered() || poses.empty()) return false;
     const auto costAt = [&q](const Pose2 &p) {
         const Cell c = q.layer->worldToCell(p.x, p.y);
         return double(q.layer->cost(c.col, c.row));
@@ -381,7 +381,7 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
         shot_ = std::move(poses);
         shotFrom_ = s;
         if (query_.timeReversed) std::swap(forward, backward);  // driven in the other gear
-        shotCost_ = cost.stepCost(from, shot_, forward + query_.reversePenalty * backward, turn) +
+        shotCost_ = cost.stepCost(from, shot_, forward + query_.settings.reversePenalty * backward, turn) +
                     gearChanges * query_.cuspPenalty +
                     query_.layerCost(shot_, forward + backward) * cost.costPerMetreOfPenalty();
         return true;

@@ -38,7 +38,7 @@ double stretchCost(const std::vector<Pose2> &poses, int before, int after, const
         samples.assign(poses.begin() + std::ptrdiff_t(a) + 1, poses.begin() + std::ptrdiff_t(b) + 1);
         double step = cost.stepCost(poses[a], samples, len, std::abs(turn)) +
                       q.layerCost(samples, len) * cost.costPerMetreOfPenalty();
-        if (runGear < 0) step *= q.reversePenalty;
+        if (runGear < 0) step *= q.settings.reversePenalty;
         total += step;
     };
     for (std::size_t k = 0; k + 1 < poses.size(); ++k)

@@ -17,22 +17,15 @@
 
 namespace gridcar
 {
-/// What a query on the car lattice weighs, besides the cost model (CarLatticeQuery's fields).
-struct CarSearchOptions
+/// What is done to a path the car lattice found (after the search, before it is returned).
+struct CarPostProcessing
 {
-    double weight{1.0};          ///< heuristic weight, >= 1
-    double reversePenalty{1.0};  ///< factor on reversed cost, >= 1
-    double cuspPenalty{0.0};     ///< cost of a gear change
-    double curveWithin{0.0};     ///< m: the Reeds-Shepp / Dubins bound within this of the goal (0: off)
-    bool curveTable{false};      ///< that bound read from the lattice's CurveTable (CarLatticeQuery::curveTable)
+    /// Curves CarLatticeSearch::shortcut() may try on a found path (0: no shortcut)
+    int shortcutCurves{0};
     /// Continuous curvature: a found path's curvature jumps replaced (smoothCurvature()) so
     /// that curvature changes no faster than this (1/m^2; 0: the path as searched)
     double curvatureRate{0.0};
-    double maxCurvature{0.0};    ///< K_max (1/m) the replacements keep
-    const OccupancyGrid *layer{nullptr};  ///< the map's cost layer (CarLatticeQuery::layer)
-    double layerWeight{0.0};              ///< its weight (`cost_layer_weight`)
-    /// Curves CarLatticeSearch::shortcut() may try on a found path (0: no shortcut)
-    int shortcutCurves{0};
+    double maxCurvature{0.0};  ///< K_max (1/m) the replacements keep
 };
 
 /**
@@ -57,17 +50,17 @@ public:
     /// The search of the last query (the first one before any; null before setup()).
     const CarLatticeSearch *search() const { return last_ ? last_ : search_.get(); }
 
-    /// One query: start pose (any lattice heading when @p freeStartHeading), the options, the
-    /// goal, the cost model.
-    FamilyRun solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start, bool freeStartHeading,
-                    const CarSearchOptions &options, const GoalTarget &goal, const LatticeCostModel &cost,
+    /// One query from @p start to @p goal: @p terms carries the settings and what they resolve
+    /// to (its start and goal fields are set here), @p post what is done to the path found.
+    FamilyRun solve(const ompl::base::SpaceInformationPtr &si, const ompl::base::State *start, CarLatticeQuery terms,
+                    const CarPostProcessing &post, const GoalTarget &goal, const LatticeCostModel &cost,
                     const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress);
     /// The explored graph of the last search.
     void plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const;
 
 
 private:
-    void smooth(const CarSearchOptions &options, std::vector<Pose2> &path, const std::function<bool()> &cancelled);
+    void smooth(const CarPostProcessing &post, std::vector<Pose2> &path, const std::function<bool()> &cancelled);
     std::shared_ptr<CarCollision> collision_;
     /// the lattice; the hybrid fallback; the hybrid at half its cell, where both ran out; the
     /// lattice for a goal heading to meet (null: search_)

@@ -8,6 +8,7 @@
 #include "gridcar/planners/CarFamily.h"
 #include "gridcar/planners/GoalAdapter.h"
 #include "gridcar/planners/GridFamily.h"
+#include "gridcar/planners/search/CarLatticeSettings.h"
 #include "gridcar/planners/SolverSupport.h"
 #include "gridcar/spaces/GridSE2StateSpace.h"
 
@@ -34,34 +35,9 @@ struct GridPlannerParams
     double turningRadius{0.0};       ///< `turning_radius`, m; 0 = automatic
     double maxMemoryMb{8192.0};      ///< `max_memory_mb`; 0 = none
     double latticeCell{0.0};         ///< `lattice_cell`, m; 0 = automatic
-    int headings{16};                ///< `headings` (car lattice): 8 or 16
-    double heuristicWeight{1.1};     ///< `heuristic_weight` (car lattice), >= 1
-    std::string reverse{"off"};      ///< `reverse` (car lattice): off, on, auto (on but on a Dubins space)
-    double reversePenalty{2.0};      ///< `reverse_penalty` (car lattice): factor on reversed cost, >= 1
-    std::optional<double> cuspPenalty;  ///< `cusp_penalty` (car lattice), m; unset: the vehicle's gearChangeDistance()
-    /// `curve_heuristic` (car lattice): off, table or exact: max in the Reeds-Shepp / Dubins
-    /// length to the goal pose, read from a CurveTable or computed at every state
-    std::string curveHeuristic{"off"};
-    std::string primitives{"auto"};  ///< `primitives` (car lattice): auto, lattice, or hybrid (Hybrid A*'s binned poses)
-    /// `continuous_curvature` (car lattice): the found path's curvature jumps replaced by G2
-    /// quintics within `curvature_rate` (smoothCurvature())
-    bool continuousCurvature{true};
-    double curvatureRate{0.0};       ///< `curvature_rate` (car lattice), 1/m^2; 0 = the vehicle's
-    /// `cost_layer_weight` (car lattice): extra cost per metre = weight x the map's cost layer
-    /// value / 252 (map_server scale / raw maps, Nav2 costmap values); 0 = the layer is ignored
-    double costLayerWeight{0.0};
-    /// `turns` (car lattice): arc (the lattice's turns are arcs at R_min), clothoid (clothoid
-    /// turns within the curvature rate, of up to 90 degrees each: the searched path's
-    /// curvature is continuous; its full-lock turns are then widened where there is room,
-    /// widenTurns()), or auto: clothoid turns towards a goal position (the heading free: a
-    /// route, driven at speed), arcs towards a goal pose whose heading is to be met and in
-    /// the tight-spot searches (a manoeuvre, where the tightest turns and the Reeds-Shepp
-    /// expansion count more than the steering rate)
-    std::string turns{"auto"};
-    /// `shortcut` (car lattice): a found path shortened by the analytic expansion's curves
-    /// where they are free, shorter and cheaper (CarLatticeSearch::shortcut()): auto (on when
-    /// the lattice reverses), on, off
-    std::string shortcut{"auto"};
+    /// The car lattice's settings (its planners declare them: CarLatticeParams.h); the search
+    /// reads them as they are (CarLatticeQuery::settings)
+    CarLatticeSettings car;
 };
 
 /**
@@ -146,67 +122,34 @@ public:
     /// other SE(2) space cells of this size over the space's bounds (automatic: R_min / 4).
     double latticeCell() const { return params_.latticeCell; }
     void setLatticeCell(double m);
-    /// Heading count of the car lattice: 8 or 16 (`headings`).
-    int latticeHeadings() const { return params_.headings; }
-    void setLatticeHeadings(int h);
-    /// Heuristic weight on the car lattice (`heuristic_weight`, >= 1; see CarLatticeQuery).
-    double heuristicWeight() const { return params_.heuristicWeight; }
-    void setHeuristicWeight(double w);
-    /// Reverse motion on the car lattice (`reverse`): `off` (default), `on` (refused by setup()
-    /// on a Dubins space, which is forward-only), `auto` (on except on a Dubins space).
-    std::string reverse() const { return params_.reverse; }
-    void setReverse(const std::string &r);
-    /// True if the car lattice drives backwards as configured (after setup()).
+    /// The car lattice's settings as set (`headings`, `heuristic_weight`, `reverse`,
+    /// `reverse_penalty`, `cusp_penalty`, `curve_heuristic`, `primitives`,
+    /// `continuous_curvature`, `curvature_rate`, `cost_layer_weight`, `turns`, `shortcut`: see
+    /// CarLatticeSettings and docs/planners.md). Each is an OMPL parameter of the planners that
+    /// search the car lattice, parsed in its setter (std::invalid_argument naming the value and
+    /// what is accepted); `reverse=on` is refused by setup() on a Dubins space, which is
+    /// forward-only. The `curve_heuristic` bound: `table` reads it from the lattice's
+    /// CurveTable (node offsets within 10 R_min per axis, kept across queries; none in the
+    /// hybrid fallback), `exact` computes it at every state within 30 R_min (CurveBound).
+    const CarLatticeSettings &carSettings() const { return params_.car; }
+    /// All car-lattice settings at once (each field that differs counts as set explicitly).
+    void setCarSettings(const CarLatticeSettings &s);
+    /// True if the car lattice drives backwards as configured (`reverse` on, or auto off a
+    /// Dubins space).
     bool reversing() const;
     /// True on OMPL's Dubins space (forward only: `reverse=on` refused, `auto` off).
     bool onDubinsSpace() const;
-    /// Factor on the cost of motion driven backwards (`reverse_penalty`, >= 1; default 2, as
-    /// Nav2's Smac planners).
-    double reversePenalty() const { return params_.reversePenalty; }
-    void setReversePenalty(double f);
-    /// Cost of a gear change (`cusp_penalty`, m of length-equivalent cost): as set, else from
+    /// Cost of a gear change (m of length-equivalent cost): `cusp_penalty` as set, else from
     /// the vehicle: the distance its stop and start at a manoeuvring speed cost (see
     /// gearChangeDistance()).
     double cuspPenalty() const;
-    void setCuspPenalty(double m);
-    /// The car lattice's primitive set (`primitives`): `lattice` (nodes joined exactly, 8 or 16
-    /// headings), `hybrid` (Hybrid A*: continuous poses in 72 heading bins, short arcs; finer
-    /// manoeuvres in tight spots, many more expansions on long routes) or `auto` (default: the
-    /// lattice, then hybrid in the time left when the lattice does not reach the goal). See
-    /// CarLatticeConfig and CarFamily.
-    std::string primitives() const { return params_.primitives; }
-    void setPrimitives(const std::string &p);
-    /// `curve_heuristic`: `off`, `table` or `exact` (0 and 1: off and exact). The heuristic
-    /// also takes the length of the shortest Reeds-Shepp (reversing) or Dubins curve to a goal
-    /// pose whose heading must be matched (the obstacle-free non-holonomic bound of Hybrid A*):
-    /// `table` reads it from the lattice's CurveTable (node offsets within 10 R_min per axis,
-    /// kept across queries; a lower bound through the goal's nearest nodes, CurveTableBound;
-    /// none in the hybrid fallback), `exact` computes it at every state within 30 R_min
-    /// (CurveBound). See docs/planners.md for what each measured; std::invalid_argument
-    /// for any other value.
-    std::string curveHeuristic() const { return params_.curveHeuristic; }
-    void setCurveHeuristic(const std::string &mode);
     /// The range the curve heuristic covers (m; 0: off, or no car lattice set up).
     double curveWithin() const;
-    bool continuousCurvature() const { return params_.continuousCurvature; }
-    void setContinuousCurvature(bool on);
-    /// `shortcut`: a found path's stretches replaced by free, shorter and cheaper curves of the
-    /// analytic expansion (CarLatticeSearch::shortcut()): `auto` (default: on when the lattice
-    /// reverses, a manoeuvre; off on a forward route, see docs/planners.md), `on`, `off` (also
-    /// 1 and 0); std::invalid_argument otherwise.
-    std::string shortcut() const { return params_.shortcut; }
-    void setShortcut(const std::string &mode);
     /// True if a found path is shortcut as configured (`shortcut`, `reverse`).
-    bool shortcutting() const { return params_.shortcut == "on" || (params_.shortcut == "auto" && reversing()); }
-    /// The `curvature_rate` parameter as set (0: the vehicle's, curvatureRateLimit()).
-    double curvatureRateParam() const { return params_.curvatureRate; }
-    void setCurvatureRate(double rate);
-    double costLayerWeight() const { return params_.costLayerWeight; }
-    std::string turns() const { return params_.turns; }
-    /// `turns`: auto, arc or clothoid; std::invalid_argument otherwise.
-    void setTurns(const std::string &t);
-    /// `cost_layer_weight` in [0, 1000]; std::invalid_argument otherwise.
-    void setCostLayerWeight(double w);
+    bool shortcutting() const
+    {
+        return params_.car.shortcut == AutoSwitch::On || (params_.car.shortcut == AutoSwitch::Auto && reversing());
+    }
     /// The curvature rate the car lattice's paths keep (1/m^2; 0: not smoothed).
     double curvatureRate() const;
 
@@ -244,12 +187,9 @@ protected:
     /// Parameters that act only on the grid lattice (the papers' searches on the map's cells):
     /// setup() refuses them, set explicitly, on a planner configured for the car lattice.
     virtual std::vector<std::string> gridLatticeOnlyParams() const { return {"allow_corner_cutting"}; }
-    /// Parameters that act only on the car lattice: setup() refuses them on the grid lattice.
-    virtual std::vector<std::string> carLatticeOnlyParams() const
-    {
-        return {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "primitives", "curve_heuristic",
-                "continuous_curvature", "curvature_rate", "cost_layer_weight", "turns", "shortcut"};
-    }
+    /// Parameters that act only on the car lattice: setup() refuses them on the grid lattice
+    /// (the car-lattice settings' names).
+    virtual std::vector<std::string> carLatticeOnlyParams() const;
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).
     void markNotExact(const std::string &why) { notExactBecause_ = why; }
@@ -257,7 +197,7 @@ protected:
     /// only where it is to be matched), else why not (paper I's smoothing ends on the last
     /// leg's heading).
     static std::string endsOffGoal(const GoalTarget &goal, const Pose2 &end);
-    /// Declares `headings` and `heuristic_weight` (for the planners that search the car lattice).
+    /// Declares the car lattice's settings (CarLatticeParams.h), for the planners that search it.
     void declareCarLatticeParams();
     /// Size of the lattice cells of the grid family (after setup()).
     double cellSize() const { return space_->cellSize(); }

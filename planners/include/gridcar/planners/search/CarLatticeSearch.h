@@ -8,6 +8,7 @@
 #include "gridcar/planners/search/AStar.h"
 #include "gridcar/planners/search/CarCollision.h"
 #include "gridcar/planners/search/CarLattice.h"
+#include "gridcar/planners/search/CarLatticeSettings.h"
 #include "gridcar/planners/search/CurveTable.h"
 #include "gridcar/planners/search/ObstacleHeuristic.h"
 #include "gridcar/planners/search/detail/StateInterner.h"
@@ -78,48 +79,53 @@ struct CarLatticeQuery
     /// Without aim: the goal's own distance from a pose, so that an approximate answer ends at
     /// the explored state nearest the goal (empty: at the start).
     std::function<double(const Pose2 &)> goalDistance;
-    /// Heuristic weight w >= 1 (weighted A*): the path found costs at most w x the lattice
-    /// optimum when the heuristic is a lower bound; larger w, fewer expansions.
-    double weight{1.0};
-    /// Factor (>= 1) on the cost of a primitive driven backwards (the primitive set's reverse
-    /// ones, the reversed segments of the analytic expansion).
-    double reversePenalty{1.0};
+    /// The settings the search reads as they are: `heuristicWeight` w >= 1 (weighted A*: the
+    /// path found costs at most w x the lattice optimum when the heuristic is a lower bound;
+    /// larger w, fewer expansions), `reversePenalty` (>= 1, on the cost of a primitive driven
+    /// backwards: the primitive set's reverse ones, the reversed segments of the analytic
+    /// expansion), `curveHeuristic` (Table: the curve bound read from the lattice's
+    /// CurveTable), `costLayerWeight`. A query built by hand searches unweighted A* without a
+    /// reversing penalty (CarLatticeSettings::plainSearch()); the planners copy in theirs. What
+    /// the settings leave to the vehicle or the map is resolved into the fields below.
+    CarLatticeSettings settings{CarLatticeSettings::plainSearch()};
     /// Searched from the goal back to the start (start and goal swapped by the caller, the path
     /// read backwards afterwards): every motion is driven in the other gear than it is searched,
     /// so reversePenalty weighs the primitives and curve segments searched forwards. A manoeuvre
     /// into a tight spot is a manoeuvre out of it read backwards, and getting out is what a
     /// search finds quickly (few ways lead in; from inside, the first free motion leads out).
     bool timeReversed{false};
-    /// Cost (>= 0, the cost model's unit) of a gear change: between a state reached forwards
+    /// Cost (>= 0, the cost model's unit; settings.cuspPenalty resolved and converted) of a gear change: between a state reached forwards
     /// and a motion backwards, or the other way, and at every cusp of the analytic expansion.
     double cuspPenalty{0.0};
     /// Within this many metres of a goal whose heading must be matched, the heuristic also
     /// takes the Reeds-Shepp (reversing) or Dubins length to the goal pose (CurveBound); 0: not.
     double curveWithin{0.0};
-    /// That length read from the lattice's CurveTable (nodes within curveWithin per axis of the
-    /// reference nodes round the goal; the table kept across runs) instead of computed at
-    /// every state; a hybrid lattice (whose states are not nodes) then has no curve bound.
-    bool curveTable{false};
+    /// settings.curveHeuristic == Table: that length read from the lattice's CurveTable (nodes
+    /// within curveWithin per axis of the reference nodes round the goal; the table kept across
+    /// runs) instead of computed at every state; a hybrid lattice (whose states are not nodes)
+    /// then has no curve bound.
+    bool curveTable() const { return settings.curveHeuristic == CurveHeuristic::Table; }
     /// Motions checked when the search is about to use them (lazyAstar()) rather than when
     /// generated, where that changes nothing but the work (a node lattice, costs known
     /// before the check: the same states closed with the same costs, ties apart).
     bool lazyChecks{true};
-    /// The map's cost layer (OccupancyGrid::cost(), 0..252) and its weight: a motion costs
-    /// layerWeight x (mean cost of its poses / 252) x its length more, in metres converted by
-    /// the cost model (costPerMetreOfPenalty()). Null or 0: the layer is not used.
+    /// The map's cost layer (OccupancyGrid::cost(), 0..252), weighed by settings.costLayerWeight:
+    /// a motion costs weight x (mean cost of its poses / 252) x its length more, in metres
+    /// converted by the cost model (costPerMetreOfPenalty()). Null or 0: the layer is not used.
     const OccupancyGrid *layer{nullptr};
-    double layerWeight{0.0};
+    /// True if the cost layer weighs on the motions.
+    bool layered() const { return layer && settings.costLayerWeight > 0; }
     /// The extra cost of a motion over @p poses of @p length metres (0 without a layer).
     double layerCost(const std::vector<Pose2> &poses, double length) const
     {
-        if (!layer || !(layerWeight > 0) || poses.empty()) return 0.0;
+        if (!layered() || poses.empty()) return 0.0;
         double sum = 0;
         for (const Pose2 &p : poses)
         {
             const Cell c = layer->worldToCell(p.x, p.y);
             sum += layer->cost(c.col, c.row);
         }
-        return layerWeight * sum / (252.0 * double(poses.size())) * length;
+        return settings.costLayerWeight * sum / (252.0 * double(poses.size())) * length;
     }
 };
 

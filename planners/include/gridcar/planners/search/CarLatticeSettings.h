@@ -1,0 +1,79 @@
+#pragma once
+/// @file CarLatticeSettings.h
+/// @brief The car lattice's settings: one plain struct of enums and numbers that the planner's
+/// OMPL parameters parse into (CarLatticeParams.cpp) and the search reads as it is
+/// (CarLatticeQuery::settings).
+
+#include <optional>
+
+namespace gridcar
+{
+/// A switch that may also follow the query: `auto` decides per space or per goal.
+enum class AutoSwitch
+{
+    Off,
+    On,
+    Auto,
+};
+
+/// The car lattice's primitive sets (`primitives`).
+enum class PrimitiveSet
+{
+    Auto,     ///< the lattice, then Hybrid A*'s in the time left when it does not reach the goal
+    Lattice,  ///< nodes joined exactly, 8 or 16 headings
+    Hybrid,   ///< Hybrid A*: continuous poses in 72 heading bins, short arcs
+};
+
+/// How the heuristic takes the Reeds-Shepp / Dubins length to a goal pose (`curve_heuristic`).
+enum class CurveHeuristic
+{
+    Off,
+    Table,  ///< read from the lattice's CurveTable (within 10 R_min per axis)
+    Exact,  ///< computed at every state (within 30 R_min)
+};
+
+/// The lattice's turns (`turns`).
+enum class TurnShape
+{
+    Auto,      ///< clothoid turns towards a goal position (a route), arcs towards a goal pose (a manoeuvre)
+    Arc,       ///< arcs at R_min
+    Clothoid,  ///< clothoid turns within the curvature rate
+};
+
+/**
+ * @brief Every setting of a car-lattice planner, as set (defaults: what a planner does with no
+ * parameter set). One field per OMPL parameter; the table in CarLatticeParams.cpp names,
+ * parses and prints each, and docs/planners.md says what each measured.
+ */
+struct CarLatticeSettings
+{
+    int headings{16};                ///< `headings`: 8 or 16
+    double heuristicWeight{1.1};     ///< `heuristic_weight`, >= 1 (weighted A*)
+    AutoSwitch reverse{AutoSwitch::Off};  ///< `reverse`: off, on, auto (on but on a Dubins space)
+    double reversePenalty{2.0};      ///< `reverse_penalty`: factor on reversed cost, >= 1
+    std::optional<double> cuspPenalty;  ///< `cusp_penalty`, m; unset: the vehicle's gearChangeDistance()
+    CurveHeuristic curveHeuristic{CurveHeuristic::Off};  ///< `curve_heuristic`
+    PrimitiveSet primitives{PrimitiveSet::Auto};           ///< `primitives`
+    /// `continuous_curvature`: the found path's curvature jumps replaced by G2 quintics within
+    /// the curvature rate (smoothCurvature())
+    bool continuousCurvature{true};
+    double curvatureRate{0.0};       ///< `curvature_rate`, 1/m^2; 0 = the vehicle's
+    /// `cost_layer_weight`: extra cost per metre = weight x the map's cost layer value / 252
+    double costLayerWeight{0.0};
+    TurnShape turns{TurnShape::Auto};  ///< `turns`
+    /// `shortcut`: a found path shortened by the analytic expansion's curves where they are
+    /// free, shorter and cheaper (auto: on when the lattice reverses)
+    AutoSwitch shortcut{AutoSwitch::Auto};
+
+    /// The settings of a query built by hand on the search alone: unweighted A*, no penalty on
+    /// reversing (the planners copy in their own).
+    static CarLatticeSettings plainSearch()
+    {
+        CarLatticeSettings s;
+        s.heuristicWeight = 1.0;
+        s.reversePenalty = 1.0;
+        return s;
+    }
+};
+
+}  // namespace gridcar
