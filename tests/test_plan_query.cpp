@@ -78,8 +78,15 @@ TEST(PlanQuery, RunQueryReadsTheGridPlannersProgressProperties)
     EXPECT_EQ(q.expanded, corner.expandedNodes());
     EXPECT_GT(q.expanded, 0u);
     EXPECT_DOUBLE_EQ(q.cost, corner.lastCost());
-    EXPECT_DOUBLE_EQ(progressValue(*p, "search cost REAL"), corner.lastCost());
-    EXPECT_EQ(progressValue(*p, "no such property"), 0.0);
+    // the typed report says the same as the planner, and an OMPL planner reports no search
+    const PlannerReport report = reportOf(*p);
+    ASSERT_TRUE(report.searchCost && report.expanded && report.searchSeconds);
+    EXPECT_DOUBLE_EQ(*report.searchCost, corner.lastCost());
+    EXPECT_EQ(*report.expanded, corner.expandedNodes());
+    EXPECT_DOUBLE_EQ(*report.searchSeconds, corner.lastSearchSeconds());
+    EXPECT_TRUE(report.ownPoses && report.searchesCarLattice && !report.searchesMapCells);
+    const PlannerReport ompl = reportOf(*configurePlanner(s.ss->getSpaceInformation(), {"rrtconnect", {}, false, false}));
+    EXPECT_FALSE(ompl.searchCost || ompl.expanded || ompl.searchSeconds || ompl.ownPoses || ompl.smoothing);
     EXPECT_GE(q.metrics.length, 45 * 0.5 - 1e-9);
     EXPECT_FALSE(q.smoothed);
     const auto cells = exploredCells(*p, *s.grid);

@@ -6,9 +6,8 @@
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/bench/PlanQuery.h"
-#include "gridcar/planners/GridPlanner.h"
+#include "gridcar/planners/PlannerReport.h"
 #include "gridcar/planners/PlannerFactory.h"
-#include "gridcar/planners/SmoothedPlanner.h"
 
 #include <cctype>
 #include <chrono>
@@ -174,9 +173,7 @@ ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query)
                                                 {q.planner, parsePlannerParams(q.params), !query.startYaw, q.smooth});
     // a search over the map's cells moves in straight cell steps whatever the space: on a car
     // space its path is no Dubins / Reeds-Shepp path, and the user should hear it before the result
-    const ompl::base::Planner *inner = p.get();
-    if (const auto *sm = dynamic_cast<const SmoothedPlanner *>(inner)) inner = sm->inner().get();
-    if (const auto *gp = dynamic_cast<const GridPlanner *>(inner); gp && !gp->usesCarLattice() && q.space != "se2")
+    if (reportOf(*p).searchesMapCells && q.space != "se2")
         std::fprintf(stderr,
                      "gridcar: warning: %s searches the map's cells in straight steps: on --space %s it ignores the "
                      "curves, and its path is not a %s path (the car-lattice planners corner-astar and improved-astar "

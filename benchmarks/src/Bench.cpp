@@ -127,8 +127,7 @@ void addRunProperties(const BenchWorld &w, const ompl::base::Planner &planner, c
     const DriveResult dr = drivePath(poses, *w.setup.checker, Scenario(), fp);
     run["sim reached BOOLEAN"] = dr.outcome == DriveResult::Outcome::Reached ? "1" : "0";
     if (dr.outcome == DriveResult::Outcome::Reached) run["sim driving time REAL"] = std::to_string(dr.drivingTime);
-    if (planner.getPlannerProgressProperties().count("expanded nodes INTEGER"))
-        run["expanded nodes INTEGER"] = std::to_string(std::uint64_t(progressValue(planner, "expanded nodes INTEGER")));
+    if (const auto expanded = reportOf(planner).expanded) run["expanded nodes INTEGER"] = std::to_string(*expanded);
 }
 
 /// A picture of a query's surroundings for the report; its entry in the paths file.

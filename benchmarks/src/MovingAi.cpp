@@ -20,7 +20,6 @@ ScenarioStats runScenarios(GridSetup &setup, const ompl::base::PlannerPtr &plann
 {
     using Clock = std::chrono::steady_clock;
     const OccupancyGrid &grid = *setup.grid;
-    const bool searchCost = planner->getPlannerProgressProperties().count("search cost REAL") > 0;
     setup.ss->setPlanner(planner);
     setup.ss->setup();
     ScenarioStats st;
@@ -37,12 +36,13 @@ ScenarioStats runScenarios(GridSetup &setup, const ompl::base::PlannerPtr &plann
         const auto t0 = Clock::now();
         const auto status = setup.ss->solve(60.0);
         st.solveSeconds += std::chrono::duration<double>(Clock::now() - t0).count();
-        st.searchSeconds += progressValue(*planner, "search time REAL");
-        st.expanded += std::uint64_t(progressValue(*planner, "expanded nodes INTEGER"));
+        const PlannerReport report = reportOf(*planner);
+        st.searchSeconds += report.searchSeconds.value_or(0.0);
+        st.expanded += report.expanded.value_or(0);
         if (progress) progress(i + 1, st.queries);
         if (status != ompl::base::PlannerStatus::EXACT_SOLUTION) continue;
         ++st.solved;
-        const double len = searchCost ? progressValue(*planner, "search cost REAL") : setup.ss->getSolutionPath().length();
+        const double len = report.searchCost ? *report.searchCost : setup.ss->getSolutionPath().length();
         if (matchesOptimal(len, e.optimalLength)) ++st.matched;
     }
     return st;

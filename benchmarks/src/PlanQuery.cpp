@@ -3,7 +3,7 @@
 #include "gridcar/core/Cusps.h"
 
 #include "gridcar/core/Errors.h"
-#include "gridcar/planners/GridPlanner.h"
+#include "gridcar/planners/PlannerReport.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/planners/SmoothedPlanner.h"
 #include "gridcar/spaces/CurveSpaces.h"
@@ -48,11 +48,6 @@ void applyParam(ompl::base::Planner &planner, const std::string &name, const std
                          " not accepted (see the planner's documentation for the values it takes)");
 }
 
-bool smoothsItself(const ompl::base::Planner &planner)
-{
-    if (!dynamic_cast<const SmoothingReport *>(&planner)) return false;
-    return !planner.params().hasParam("smooth") || planner.params().getParam("smooth")->getValue() == "1";
-}
 }  // namespace
 
 ompl::base::PlannerPtr configurePlanner(const ompl::base::SpaceInformationPtr &si, const PlannerConfig &config)
@@ -61,7 +56,7 @@ ompl::base::PlannerPtr configurePlanner(const ompl::base::SpaceInformationPtr &s
     if (config.freeStartHeading && planner->params().hasParam("free_start_heading"))
         planner->params().setParam("free_start_heading", "1");
     for (const auto &kv : config.params) applyParam(*planner, kv.first, kv.second);
-    if (config.smooth && !smoothsItself(*planner)) planner = std::make_shared<SmoothedPlanner>(planner);
+    if (config.smooth && !reportOf(*planner).smoothsItself) planner = std::make_shared<SmoothedPlanner>(planner);
     return planner;
 }
 
@@ -81,24 +76,13 @@ std::string configurationLabel(const NamedConfiguration &c)
     return s;
 }
 
-double progressValue(const ompl::base::Planner &planner, const std::string &property)
-{
-    const auto &props = planner.getPlannerProgressProperties();
-    const auto it = props.find(property);
-    return it == props.end() ? 0.0 : std::strtod(it->second().c_str(), nullptr);
-}
-
-
 std::vector<Pose2> solutionPoses(const GridSetup &setup, const ompl::base::Planner &planner)
 {
     ompl::geometric::PathGeometric path = setup.ss->getSolutionPath();
     // on Dubins / Reeds-Shepp, an OMPL planner's consecutive states are joined by the space's
     // curves: the poses along them, at most the validity resolution apart (grid planners'
     // paths are their own poses: dense car-lattice curves, or the papers' grid polylines)
-    const auto *wrapper = dynamic_cast<const SmoothedPlanner *>(&planner);
-    const bool ours = dynamic_cast<const GridPlanner *>(&planner) ||
-                      (wrapper && wrapper->method() == SmoothedPlanner::Method::PaperI);
-    if (setup.kind == SpaceKind::SE2 || ours) return toPoses(path);
+    if (setup.kind == SpaceKind::SE2 || reportOf(planner).ownPoses) return toPoses(path);
     const auto &space = setup.ss->getStateSpace();
     if (carSpaceTurningRadius(*space) > 0) return carSpacePoses(*space, path, space->getLongestValidSegmentLength());
     path.interpolate();
@@ -118,31 +102,26 @@ QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, co
     q.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     if (setup.ss->haveSolutionPath()) q.path = solutionPoses(setup, *planner);
     q.rawPath = q.path;
-    q.expanded = std::uint64_t(progressValue(*planner, "expanded nodes INTEGER"));
+    const PlannerReport report = reportOf(*planner);
+    q.expanded = report.expanded.value_or(0);
     // a path may reverse on a Reeds-Shepp space, or on any space where the car lattice reverses
     const bool reversing = setup.reversing() || drivesBackwards(q.path);
     q.metrics = computePathMetrics(q.path, setup.checker.get(), TurnParams(), reversing);
     q.maxTurnDeg = q.metrics.maxTurnDeg;
-    const auto *report = dynamic_cast<const SmoothingReport *>(planner.get());
-    if (report && !report->lastSmoothing().path.empty())
+    const SmoothingResult *sm = report.smoothing;
+    if (sm && !sm->path.empty())
     {
-        const SmoothingResult &sm = report->lastSmoothing();
-        q.rawPath = report->lastRawPath();
+        q.rawPath = report.rawPath;
         q.smoothed = true;
-        q.smoothingSeconds = sm.seconds;
-        q.adjustFailures = sm.adjustFailures;
-        q.bezierFallbacks = sm.bezierFallbacks;
+        q.smoothingSeconds = sm->seconds;
+        q.adjustFailures = sm->adjustFailures;
+        q.bezierFallbacks = sm->bezierFallbacks;
         q.maxTurnDeg = 0.0;
-        for (const CornerReport &c : sm.corners) q.maxTurnDeg = std::max(q.maxTurnDeg, c.turnDeg);
+        for (const CornerReport &c : sm->corners) q.maxTurnDeg = std::max(q.maxTurnDeg, c.turnDeg);
     }
-    const bool searchCost = planner->getPlannerProgressProperties().count("search cost REAL") > 0;
-    q.cost = searchCost ? progressValue(*planner, "search cost REAL") : q.metrics.length;
-    const GridPlanner *grid = dynamic_cast<const GridPlanner *>(planner.get());
-    if (const auto *w = dynamic_cast<const SmoothedPlanner *>(planner.get()))
-        grid = dynamic_cast<const GridPlanner *>(w->inner().get());
-    if (grid) q.notExactBecause = grid->lastStopReason();
-    if (report && !report->lastSmoothing().notDrivable.empty())
-        q.notExactBecause = "the smoothed path is not drivable: " + report->lastSmoothing().notDrivable;
+    q.cost = report.searchCost.value_or(q.metrics.length);
+    q.notExactBecause = report.stopReason;
+    if (sm && !sm->notDrivable.empty()) q.notExactBecause = "the smoothed path is not drivable: " + sm->notDrivable;
     DrivabilityOptions drive;
     drive.reversing = reversing;
     if (!q.path.empty()) q.drivability = checkDrivable(q.path, *setup.checker, drive);

@@ -206,6 +206,19 @@ std::string GridPlanner::endsOffGoal(const GoalTarget &goal, const Pose2 &end)
     return buf;
 }
 
+PlannerReport GridPlanner::lastReport() const
+{
+    PlannerReport r;
+    r.ownPoses = true;
+    r.searchesMapCells = !usesCarLattice();
+    r.searchesCarLattice = usesCarLattice();
+    r.expanded = support_.expanded();
+    r.searchCost = support_.cost();
+    r.searchSeconds = support_.searchSeconds();
+    r.stopReason = support_.stopReason();
+    return r;
+}
+
 void GridPlanner::getPlannerData(ompl::base::PlannerData &data) const
 {
     ompl::base::Planner::getPlannerData(data);

@@ -336,6 +336,15 @@ std::unique_ptr<LatticeCostModel> ImprovedAStar::carCost() const
     return std::make_unique<IntegralCost>(*this);
 }
 
+PlannerReport ImprovedAStar::lastReport() const
+{
+    PlannerReport r = GridPlanner::lastReport();
+    r.smoothsItself = ip_.smooth;  // the `smooth` switch (acting on the grid lattice)
+    r.smoothing = &lastSmoothing();
+    r.rawPath = lastRawPath();
+    return r;
+}
+
 bool ImprovedAStar::postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc)
 {
     if (ip_.carLattice) return false;  // the car lattice's paths are drivable curves as searched

@@ -90,7 +90,7 @@ ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTermin
     }
     // a car-lattice path is drivable as searched: paper I's smoothing would only move it off
     // the curves whose footprint was checked
-    if (const auto *g = dynamic_cast<const GridPlanner *>(inner_.get()); g && g->carSearch()) return st;
+    if (reportOf(*inner_).searchesCarLattice) return st;
     auto vc = std::dynamic_pointer_cast<FootprintValidityChecker>(si_->getStateValidityChecker());
     auto out = std::make_shared<ompl::geometric::PathGeometric>(*path);
     last_ = smoothSolutionPath(si_, vc->checker(), *out, raw_, ptc);
@@ -128,5 +128,17 @@ ompl::base::PlannerStatus SmoothedPlanner::solve(const ompl::base::PlannerTermin
 }
 
 void SmoothedPlanner::getPlannerData(ompl::base::PlannerData &data) const { inner_->getPlannerData(data); }
+
+PlannerReport SmoothedPlanner::lastReport() const
+{
+    PlannerReport r = reportOf(*inner_);
+    r.ownPoses = method_ == Method::PaperI;
+    // a wrapper over a planner with a `smooth` switch smooths as that switch says
+    r.smoothsItself = !params_.hasParam("smooth") || params_.getParam("smooth")->getValue() == "1";
+    // the smoothing reported is this wrapper's (none with OMPL's simplifier)
+    r.smoothing = method_ == Method::PaperI ? &last_ : nullptr;
+    r.rawPath = raw_;
+    return r;
+}
 
 }  // namespace gridcar

@@ -8,6 +8,7 @@
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/path/PostProcess.h"
 #include "gridcar/spaces/Setup.h"
+#include "gridcar/planners/PlannerReport.h"
 
 #include <ompl/base/Planner.h>
 
@@ -51,10 +52,6 @@ struct PlannerConfig
  */
 ompl::base::PlannerPtr configurePlanner(const ompl::base::SpaceInformationPtr &si, const PlannerConfig &config);
 
-/// A planner's progress property as a number (0 when it has none): "expanded nodes INTEGER",
-/// "search cost REAL", ...
-double progressValue(const ompl::base::Planner &planner, const std::string &property);
-
 /// One planning query and everything reported about it.
 struct QueryResult
 {
@@ -77,7 +74,7 @@ struct QueryResult
     Drivability drivability;
     /// Why the planner returned no exact solution though it was not out of time: a grid
     /// planner stopped at its memory bound, or a smoothed path failed the drivable check
-    /// (GridPlanner::lastStopReason(), SmoothingResult::notDrivable); empty otherwise
+    /// (PlannerReport::stopReason, SmoothingResult::notDrivable); empty otherwise
     std::string notExactBecause;
 };
 

@@ -8,6 +8,7 @@
 #include "gridcar/planners/CarFamily.h"
 #include "gridcar/planners/GoalAdapter.h"
 #include "gridcar/planners/GridFamily.h"
+#include "gridcar/planners/PlannerReport.h"
 #include "gridcar/planners/search/CarLatticeSettings.h"
 #include "gridcar/planners/SolverSupport.h"
 #include "gridcar/spaces/GridSE2StateSpace.h"
@@ -61,7 +62,7 @@ struct GridPlannerParams
  * before the next solve(); a parameter set explicitly that does not act in the family the
  * planner is configured for makes setup() throw std::invalid_argument with the reason.
  */
-class GridPlanner : public ompl::base::Planner
+class GridPlanner : public ompl::base::Planner, public ReportingPlanner
 {
 public:
     GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name);
@@ -87,6 +88,8 @@ public:
     bool freeStartHeading() const { return params_.freeStartHeading; }
     void setFreeStartHeading(bool v);
 
+    /// The last solve()'s report: expansions, search cost, stop reason, which family searched.
+    PlannerReport lastReport() const override;
     /// Statistics of the last solve().
     std::uint64_t expandedNodes() const { return support_.expanded(); }
     /// The planner's own search cost of the last solution (metres, incl. any penalties).

@@ -79,7 +79,7 @@ struct ImprovedAStarParams
     bool smooth{true};             ///< `smooth` (grid lattice)
 };
 
-class ImprovedAStar : public GridPlanner, public SmoothingReport
+class ImprovedAStar : public GridPlanner
 {
 public:
     explicit ImprovedAStar(const ompl::base::SpaceInformationPtr &si);
@@ -128,15 +128,18 @@ public:
     double obstacleCostAtPose(const Pose2 &p) const;
     /// Heuristic value from a cell to the goal cell, metres (after setup(), in the current mode).
     double heuristicAt(int col, int row, int goalCol, int goalRow) const;
+    /// The last solve()'s report with paper I's smoothing (on the grid lattice).
+    PlannerReport lastReport() const override;
     /// Post-processing report of the last solve() (empty when smooth = false).
-    const SmoothingResult &lastSmoothing() const override
+    const SmoothingResult &lastSmoothing() const
     {
         static const SmoothingResult none;
         return ip_.carLattice ? none : lastSmoothing_;
     }
     /// The lattice path of the last solve() before post-processing (world poses).
     const std::vector<Pose2> &lastLatticePath() const { return latticePath_; }
-    const std::vector<Pose2> &lastRawPath() const override
+    /// The path before smoothing (world poses; empty when nothing was smoothed).
+    const std::vector<Pose2> &lastRawPath() const
     {
         static const std::vector<Pose2> none;
         return !ip_.carLattice && ip_.smooth && !lastSmoothing_.path.empty() ? latticePath_ : none;

@@ -1,10 +1,10 @@
 #pragma once
 /// @file SmoothedPlanner.h
 /// @brief Paper I's post-processing (smoothPath()) of an OMPL solution path: one function that
-/// every route to smoothing uses, the report a smoothing planner gives, and a wrapper that adds
-/// it to any OMPL planner.
+/// every route to smoothing uses, and a wrapper that adds it to any OMPL planner.
 
 #include "gridcar/path/PostProcess.h"
+#include "gridcar/planners/PlannerReport.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -13,17 +13,6 @@
 
 namespace gridcar
 {
-/// What a planner that smooths its own solution reports about the last solve().
-class SmoothingReport
-{
-public:
-    virtual ~SmoothingReport() = default;
-    /// The post-processing of the last solve() (empty path when nothing was smoothed).
-    virtual const SmoothingResult &lastSmoothing() const = 0;
-    /// The path before smoothing (world poses; empty when nothing was smoothed).
-    virtual const std::vector<Pose2> &lastRawPath() const = 0;
-};
-
 /// Replaces @p path (at least 3 states) by smoothPath() of it, collision-checked with
 /// @p checker; @p raw receives the poses before smoothing. Returns the smoothing report.
 /// @p ptc is polled between corners: when it stops the smoothing, @p path is left as it was
@@ -51,7 +40,7 @@ std::string smoothedPathVerdict(const std::vector<Pose2> &path, const FootprintC
  * space information's motion validator: on a Reeds-Shepp set-up, the footprint along the
  * curves); it needs no gridcar type and reports no SmoothingResult.
  */
-class SmoothedPlanner : public ompl::base::Planner, public SmoothingReport
+class SmoothedPlanner : public ompl::base::Planner, public ReportingPlanner
 {
 public:
     /// What the wrapper does to the inner planner's path.
@@ -70,8 +59,13 @@ public:
     void getPlannerData(ompl::base::PlannerData &data) const override;
     const ompl::base::PlannerPtr &inner() const { return inner_; }
     Method method() const { return method_; }
-    const SmoothingResult &lastSmoothing() const override { return last_; }
-    const std::vector<Pose2> &lastRawPath() const override { return raw_; }
+    /// The post-processing of the last solve() (empty path when nothing was smoothed).
+    const SmoothingResult &lastSmoothing() const { return last_; }
+    /// The path before smoothing (world poses; empty when nothing was smoothed).
+    const std::vector<Pose2> &lastRawPath() const { return raw_; }
+    /// The inner planner's report, with this wrapper's smoothing (Method::PaperI: its poses are
+    /// the path; OmplSimplifier: the space's curves still join them).
+    PlannerReport lastReport() const override;
 
 private:
     ompl::base::PlannerPtr inner_;
