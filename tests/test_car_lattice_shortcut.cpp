@@ -9,6 +9,7 @@
 #include "gridcar/core/Cusps.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/sim/Simulation.h"
+#include "gridcar/planners/CarLatticePlanner.h"
 #include "gridcar/planners/ImprovedAStar.h"
 #include "gridcar/bench/PlanQuery.h"
 #include "gridcar/planners/search/CarLatticeSearch.h"
@@ -194,7 +195,7 @@ TEST(CarLatticeSearch, ShortcutParameterModes)
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     auto grid = std::make_shared<const OccupancyGrid>(generateCampus());
     GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
-    auto planner = std::dynamic_pointer_cast<GridPlanner>(makePlanner(s.ss->getSpaceInformation(), "corner-astar"));
+    auto planner = std::dynamic_pointer_cast<CarLatticePlanner>(makePlanner(s.ss->getSpaceInformation(), "corner-astar"));
     ASSERT_TRUE(planner);
     auto &params = planner->params();
     EXPECT_EQ(planner->carSettings().shortcut, AutoSwitch::Auto);

@@ -9,6 +9,7 @@
 #include "gridcar/path/ContinuousCurvature.h"
 #include "gridcar/core/Cusps.h"
 #include "gridcar/path/Drivability.h"
+#include "gridcar/planners/CarLatticePlanner.h"
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/OmplAdapters.h"
@@ -371,7 +372,7 @@ TEST(ContinuousCurvature, PlannersReturnPathsWithinTheRate)
         }
     }
     GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-i"));
-    auto p = std::dynamic_pointer_cast<GridPlanner>(makePlanner(s.ss->getSpaceInformation(), "corner-astar"));
+    auto p = std::dynamic_pointer_cast<CarLatticePlanner>(makePlanner(s.ss->getSpaceInformation(), "corner-astar"));
     ASSERT_TRUE(p);
     EXPECT_FALSE(p->params().setParam("curvature_rate", "-1"));
     EXPECT_FALSE(p->params().setParam("curvature_rate", "nan"));

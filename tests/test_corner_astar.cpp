@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <ompl/base/goals/GoalRegion.h>
 #include <ompl/base/PlannerData.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -32,6 +34,14 @@ using namespace gridcar::test;
 // ---------------------------------------------------------------- corner-weighted A*
 namespace
 {
+/// A number as text that parses back to the same double.
+std::string exactText(double v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
 /// Independent reference: Dijkstra over (cell, arrival direction) with the same rules.
 double referenceCornerCost(const OccupancyGrid &g, int sc, int sr, int gc, int gr, const CornerWeights &w, double res)
 {
@@ -93,15 +103,15 @@ TEST(CornerAStar, CostEqualsDijkstraOverTheSameGraphOnRandomMaps)
         do { sc = uc(rng); sr = ur(rng); } while (g->isBlocked(sc, sr));
         do { gc = uc(rng); gr = ur(rng); } while (g->isBlocked(gc, gr) || (gc == sc && gr == sr));
         GridSetup s = makeGridSetup(g, VehicleParams::preset("point"));
-        auto planner = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
-        planner->setMode("paper");  // paper C's 8-connected search, compared with a Dijkstra over the same graph
+        // paper C's 8-connected search, compared with a Dijkstra over the same graph
+        auto planner = std::make_shared<CornerAStarGrid>(s.ss->getSpaceInformation());
         CornerWeights w;
         w.w45 = 0.3 + trial * 0.2;
         w.w90 = 1.0 + trial * 0.5;
         w.w135 = 2.0 + trial * 0.7;
-        planner->setWeight45(w.w45);
-        planner->setWeight90(w.w90);
-        planner->setWeight135(w.w135);
+        ASSERT_TRUE(planner->params().setParam("corner_weight_45", exactText(w.w45)));
+        ASSERT_TRUE(planner->params().setParam("corner_weight_90", exactText(w.w90)));
+        ASSERT_TRUE(planner->params().setParam("corner_weight_135", exactText(w.w135)));
         planner->setFreeStartHeading(true);
         s.ss->setPlanner(planner);
         s.setStartAndGoal(cellPose(*g, sc, sr), cellPose(*g, gc, gr));
@@ -165,8 +175,7 @@ TEST(CornerAStar, NoReversalAndStartHeadingCounts)
         g->set(c, 2, CellState::Occupied);
     }
     GridSetup s = makeGridSetup(g, VehicleParams::preset("point"));
-    auto planner = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
-    planner->setMode("paper");
+    auto planner = std::make_shared<CornerAStarGrid>(s.ss->getSpaceInformation());
     s.ss->setPlanner(planner);
     s.setStartAndGoal(cellPose(*g, 10, 1, 0.0), cellPose(*g, 3, 1));
     EXPECT_NE(s.ss->solve(1.0), ob::PlannerStatus::EXACT_SOLUTION);
@@ -212,12 +221,11 @@ TEST(CornerAStar, FewerHeadingChangesThanAStarEuclideanOnCampusQueries)
     {
         int changes[2];
         int k = 0;
-        for (const char *name : {"corner-astar", "astar-euclidean"})
+        for (const char *name : {"corner-astar-grid", "astar-euclidean"})  // paper C's grid corners
         {
             s.ss->clear();
             auto p = makePlanner(s.ss->getSpaceInformation(), name);
             p->params().setParam("free_start_heading", "1");
-            if (std::string(name) == "corner-astar") p->params().setParam("mode", "paper");  // paper C's grid corners
             s.ss->setPlanner(p);
             s.setStartAndGoal(pts[i], pts[i + 1]);
             ASSERT_EQ(s.ss->solve(30.0), ob::PlannerStatus::EXACT_SOLUTION) << name;
@@ -260,8 +268,8 @@ TEST(CornerAStar, DrivingTimeCostOnTheCarLattice)
     EXPECT_GE(p->lastCost(), len / v.maxSpeed);  // seconds, at least the length at v_max
     EXPECT_LE(p->lastCost(), len / std::sqrt(lateralAccelLimit(v) * v.minTurningRadius()) + 10 * cornerTimeLost(v, M_PI));
     GridSetup g = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
-    auto q = std::make_shared<CornerAStar>(g.ss->getSpaceInformation());
-    q->setCost("time");
-    q->setLattice("grid");
-    EXPECT_THROW(q->setup(), std::invalid_argument);
+    // the driving-time cost is the car lattice's: paper C's grid search does not declare it
+    auto q = std::make_shared<CornerAStarGrid>(g.ss->getSpaceInformation());
+    EXPECT_FALSE(q->params().hasParam("cost"));
+    EXPECT_TRUE(std::make_shared<CornerAStar>(g.ss->getSpaceInformation())->params().hasParam("cost"));
 }

@@ -31,11 +31,11 @@ VehicleParams smallCar()
     return v;
 }
 
-std::shared_ptr<ImprovedAStar> improved(const GridSetup &s)
+/// These tests are about paper I's lattice on the map's cells.
+std::shared_ptr<ImprovedAStarGrid> improved(const GridSetup &s)
 {
-    auto p = std::dynamic_pointer_cast<ImprovedAStar>(makePlanner(s.ss->getSpaceInformation(), "improved-astar"));
+    auto p = std::dynamic_pointer_cast<ImprovedAStarGrid>(makePlanner(s.ss->getSpaceInformation(), "improved-astar-grid"));
     EXPECT_TRUE(p);
-    p->setLattice("grid");  // these tests are about paper I's lattice on the map's cells
     return p;
 }
 
@@ -126,13 +126,24 @@ TEST(ImprovedAStar, HeuristicsObstacleCostAndLattice)
     EXPECT_EQ(p->stepsBeforeTurn(0), 6);  // ceil(1.667 / 0.298)
     EXPECT_EQ(p->stepsBeforeTurn(1), 4);  // ceil(1.667 / 0.421)
     // setters throw std::invalid_argument, which OMPL's setParam() turns into false (value kept)
-    const std::string modeBefore = p->mode();
+    const bool modeBefore = p->improvedSettings().paperMode;
     EXPECT_FALSE(p->params().setParam("mode", "bogus"));
-    EXPECT_EQ(p->mode(), modeBefore);
+    EXPECT_EQ(p->improvedSettings().paperMode, modeBefore);
     EXPECT_FALSE(p->params().setParam("delta", "-1"));
-    EXPECT_THROW(p->setMode("fast"), std::invalid_argument);
-    EXPECT_THROW(p->setDelta(-1.0), std::invalid_argument);
+    EXPECT_DOUBLE_EQ(p->improvedSettings().delta, 2.0);
     EXPECT_THROW(p->setHeuristic("magic"), std::invalid_argument);
+    EXPECT_EQ(p->heuristic(), "auto");
+    // the settings' own messages name the setting, the value and the choices
+    ImprovedSettings settings;
+    for (const auto &f : improvedSettingFields())
+        if (f.name == "mode") EXPECT_THROW(f.parse(settings, "fast"), std::invalid_argument);
+    // the car-lattice planner declares what acts in it: not the grid search's switches
+    auto car = std::make_shared<ImprovedAStar>(s.ss->getSpaceInformation());
+    for (const char *gridOnly : {"heuristic", "contour", "smooth", "allow_corner_cutting", "lattice"})
+        EXPECT_FALSE(car->params().hasParam(gridOnly)) << gridOnly;
+    for (const char *grid : {"heuristic", "contour", "smooth", "allow_corner_cutting", "mode", "delta"})
+        EXPECT_TRUE(p->params().hasParam(grid)) << grid;
+    EXPECT_FALSE(p->params().hasParam("headings"));
 }
 
 TEST(ImprovedAStar, IntegralModeEqualsDijkstraOverTheSameCost)

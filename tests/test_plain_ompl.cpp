@@ -130,8 +130,8 @@ TEST(PlainOmpl, GridLatticePlannersOnPlainSE2)
          std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>>{
              {"astar-euclidean", {{"lattice_cell", "0.5"}}},
              {"dijkstra", {{"lattice_cell", "1"}}},
-             {"corner-astar", {{"mode", "paper"}, {"lattice_cell", "0.5"}}},
-             {"improved-astar", {{"lattice", "grid"}, {"lattice_cell", "0.5"}}}})
+             {"corner-astar-grid", {{"lattice_cell", "0.5"}}},
+             {"improved-astar-grid", {{"lattice_cell", "0.5"}}}})
     {
         SCOPED_TRACE(planner);
         const Outcome o = solveOn(std::make_shared<ompl::base::SE2StateSpace>(), planner, params);

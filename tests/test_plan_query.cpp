@@ -55,10 +55,13 @@ TEST(PlanQuery, SmoothingIsAddedOnceWhereThePlannerDoesNotSmoothItself)
     const auto si = s.ss->getSpaceInformation();
     EXPECT_TRUE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"astar-octile", {}, false, true}).get()));
     EXPECT_FALSE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"astar-octile", {}, false, false}).get()));
-    // improved-astar smooths its own path (smooth = 1) ...
+    // improved-astar's paths are final (the car lattice's, drivable as searched); paper I's grid
+    // search smooths its own path (smooth = 1) ...
     EXPECT_FALSE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"improved-astar", {}, false, true}).get()));
+    EXPECT_FALSE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"improved-astar-grid", {}, false, true}).get()));
     // ... unless told not to, when --smooth wraps it
-    EXPECT_TRUE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"improved-astar", {{"smooth", "0"}}, false, true}).get()));
+    EXPECT_TRUE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"improved-astar-grid", {{"smooth", "0"}}, false, true}).get()));
+    EXPECT_TRUE(dynamic_cast<SmoothedPlanner *>(configurePlanner(si, {"improved-astar", {{"lattice", "grid"}, {"smooth", "0"}}, false, true}).get()));
     // a "+smooth" name is not wrapped twice
     auto named = configurePlanner(si, {"astar-octile+smooth", {}, false, true});
     auto *sp = dynamic_cast<SmoothedPlanner *>(named.get());

@@ -6,6 +6,8 @@
 #include "gridcar/path/PathMetrics.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/planners/CornerAStar.h"
+#include "gridcar/planners/CarLatticePlanner.h"
+#include "gridcar/planners/GridLatticePlanner.h"
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/planners/search/CarLatticeSearch.h"
 #include "gridcar/spaces/OmplAdapters.h"
@@ -22,11 +24,10 @@ namespace ob = ompl::base;
 namespace
 {
 /// A new planner from parts: the car lattice with the default (length) cost.
-class LengthLattice : public GridPlanner
+class LengthLattice : public CarLatticePlanner
 {
 public:
-    explicit LengthLattice(const ob::SpaceInformationPtr &si) : GridPlanner(si, "length-lattice") { declareCarLatticeParams(); }
-    bool usesCarLattice() const override { return true; }
+    explicit LengthLattice(const ob::SpaceInformationPtr &si) : CarLatticePlanner(si, "length-lattice") {}
 };
 
 /// Successors of a cell: the 4 axis-aligned moves.
@@ -78,10 +79,10 @@ public:
     }
 };
 
-class FourConnectedPlanner : public GridPlanner
+class FourConnectedPlanner : public GridLatticePlanner
 {
 public:
-    explicit FourConnectedPlanner(const ob::SpaceInformationPtr &si) : GridPlanner(si, "four-connected") {}
+    explicit FourConnectedPlanner(const ob::SpaceInformationPtr &si) : GridLatticePlanner(si, "four-connected") {}
 
 protected:
     std::unique_ptr<GridNodes> makeGridNodes() override { return std::make_unique<FourConnected>(); }
@@ -116,9 +117,8 @@ TEST(PlannerParts, LengthOnlyCarLatticeFromParts)
 
     s.ss->clear();
     auto corner = std::make_shared<CornerAStar>(s.ss->getSpaceInformation());
-    corner->setWeight45(0);
-    corner->setWeight90(0);
-    corner->setWeight135(0);
+    for (const char *w : {"corner_weight_45", "corner_weight_90", "corner_weight_135"})
+        ASSERT_TRUE(corner->params().setParam(w, "0"));
     ASSERT_TRUE(corner->params().setParam("shortcut", "off"));
     s.ss->setPlanner(corner);
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
@@ -153,13 +153,16 @@ TEST(PlannerParts, FourConnectedGridNodeTypeFromParts)
     EXPECT_LT(dynamic_cast<GridPlanner &>(*dijkstra).lastCost(), fourCost);
 }
 
-// A planner of the car lattice only refuses the grid family with a message, not a crash.
+// A grid-lattice planner whose node type is missing says so with a message, not a crash.
 TEST(PlannerParts, APlannerWithoutGridNodesSaysSo)
 {
-    class NoGrid : public GridPlanner
+    class NoGrid : public GridLatticePlanner
     {
     public:
-        explicit NoGrid(const ob::SpaceInformationPtr &si) : GridPlanner(si, "no-grid") {}
+        explicit NoGrid(const ob::SpaceInformationPtr &si) : GridLatticePlanner(si, "no-grid") {}
+
+    protected:
+        std::unique_ptr<GridNodes> makeGridNodes() override { return nullptr; }
     };
     GridSetup s = test::testSetup();
     auto p = std::make_shared<NoGrid>(s.ss->getSpaceInformation());

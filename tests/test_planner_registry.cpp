@@ -3,6 +3,8 @@
 // planner as configured refused with the reason, and a parameter acting the same whether it is
 // set before or after setup().
 #include "gridcar/bench/PlanQuery.h"
+#include "gridcar/core/Errors.h"
+#include "gridcar/planners/CarLatticePlanner.h"
 #include "gridcar/planners/CarLatticeParams.h"
 #include "gridcar/planners/CornerAStar.h"
 #include "gridcar/planners/PlannerFactory.h"
@@ -65,13 +67,14 @@ TEST(PlannerRegistry, ThePapersSearchesHaveNamesAndTheOldSwitchesStayAliases)
     EXPECT_DOUBLE_EQ(lengthOf(s, configurePlanner(si, {"improved-astar", {{"lattice", "grid"}}, false, false})), igrid);
 }
 
-TEST(PlannerRegistry, AParameterThatDoesNotActIsRefusedWithTheReason)
+TEST(PlannerRegistry, APlannerDeclaresOnlyWhatActsInIt)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     GridSetup s = makeGridSetup(wallsMap(), VehicleParams::preset("paper-c-robot"));
     const auto &si = s.ss->getSpaceInformation();
-    // grid-lattice parameters on the car lattice, and car-lattice ones on the grid lattice:
-    // they used to be accepted and ignored
+    // grid-lattice parameters on the car lattice, and car-lattice ones on the grid lattice: not
+    // declared there, so refused where they are set, naming the parameter and listing those
+    // the planner has
     const std::vector<std::pair<std::string, PlannerParams>> refused{
         {"improved-astar", {{"heuristic", "euclidean"}}},
         {"improved-astar", {{"smooth", "0"}}},
@@ -79,26 +82,39 @@ TEST(PlannerRegistry, AParameterThatDoesNotActIsRefusedWithTheReason)
         {"improved-astar", {{"allow_corner_cutting", "1"}}},
         {"corner-astar", {{"allow_corner_cutting", "1"}}},
         {"corner-astar-grid", {{"headings", "8"}}},
+        {"corner-astar-grid", {{"cost", "time"}}},
         {"corner-astar", {{"lattice", "grid"}, {"heuristic_weight", "1.5"}}},
         {"improved-astar-grid", {{"headings", "8"}}},
+        {"dijkstra", {{"reverse", "on"}}},
     };
     for (const auto &c : refused)
     {
         std::string label = c.first;
         for (const auto &kv : c.second) label += " " + kv.first + "=" + kv.second;
         SCOPED_TRACE(label);
-        auto p = configurePlanner(si, {c.first, c.second, false, false});
-        p->setProblemDefinition(s.ss->getProblemDefinition());
         try
         {
-            p->setup();
+            configurePlanner(si, {c.first, c.second, false, false});
             ADD_FAILURE() << "accepted";
         }
-        catch (const std::invalid_argument &e)
+        catch (const InputError &e)
         {
-            EXPECT_NE(std::string(e.what()).find(c.second.back().first), std::string::npos) << e.what();
-            EXPECT_NE(std::string(e.what()).find("lattice"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("no parameter '" + c.second.back().first + "'"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("its parameters:"), std::string::npos) << e.what();
         }
+    }
+    // the old switches name the family, not a parameter: lattice=car on a -grid name is refused
+    EXPECT_THROW(configurePlanner(si, {"corner-astar-grid", {{"lattice", "car"}}, false, false}), InputError);
+    // every declared parameter of our planners acts in them: the car lattice's table is
+    // declared by the car-lattice planners only, allow_corner_cutting by the grid ones only
+    for (const std::string &name : gridPlannerNames())
+    {
+        auto p = makePlanner(si, name);
+        const bool car = reportOf(*p).searchesCarLattice;
+        EXPECT_EQ(p->params().hasParam("headings"), car) << name;
+        EXPECT_EQ(p->params().hasParam("reverse"), car) << name;
+        EXPECT_EQ(p->params().hasParam("allow_corner_cutting"), !car) << name;
+        EXPECT_FALSE(p->params().hasParam("lattice")) << name;
     }
     // the same parameters where they act are fine, in either order
     for (const auto &c : std::vector<std::pair<std::string, PlannerParams>>{
@@ -155,7 +171,7 @@ TEST(PlannerRegistry, ASwitchTakesOneZeroTrueFalseOnOff)
     const double la = lengthOf(s, a);
     ASSERT_GT(la, 0);
     EXPECT_DOUBLE_EQ(la, lengthOf(s, b));
-    EXPECT_TRUE(std::static_pointer_cast<GridPlanner>(a)->reversing());
+    EXPECT_TRUE(std::static_pointer_cast<CarLatticePlanner>(a)->reversing());
 }
 
 TEST(PlannerRegistry, AWeightActsTheSameSetBeforeOrAfterSetup)
@@ -176,7 +192,10 @@ TEST(PlannerRegistry, AWeightActsTheSameSetBeforeOrAfterSetup)
         const double lAfter = lengthOf(s, after);
         ASSERT_GT(lBefore, 0);
         EXPECT_DOUBLE_EQ(lAfter, lBefore);
-        const auto &w = std::static_pointer_cast<CornerAStar>(after)->weights();
+        const auto corner = std::dynamic_pointer_cast<CornerAStar>(after);
+        const auto cornerGrid = std::dynamic_pointer_cast<CornerAStarGrid>(after);
+        ASSERT_TRUE(corner || cornerGrid);
+        const CornerWeights &w = corner ? corner->weights() : cornerGrid->weights();
         EXPECT_EQ(w.w45, 0.5);
         EXPECT_EQ(w.w90, physicsCornerWeights(s.checker->vehicle()).w90) << "the others from physics";
         (void)lPhysics;

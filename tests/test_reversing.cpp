@@ -137,9 +137,10 @@ TEST(Reversing, PenaltiesAndWhereTheyAct)
     ASSERT_EQ(s.ss->solve(5.0), ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_EQ(backwardPoses(toPoses(s.ss->getSolutionPath())), 0);
 
+    // the grid search has no reverse to set
     auto grid = makePlanner(s.ss->getSpaceInformation(), "corner-astar-grid");
-    grid->params().setParam("reverse", "on");
-    EXPECT_THROW(grid->setup(), std::invalid_argument);
+    EXPECT_FALSE(grid->params().hasParam("reverse"));
+    EXPECT_FALSE(grid->params().hasParam("reverse_penalty"));
 }
 
 // Out of a parallel slot the lattice's nodes cannot manoeuvre from the start (every primitive

@@ -1,5 +1,6 @@
 // The settings tables (Settings.h, CarLatticeParams.h): every car-lattice setting parsed once,
 // in its setter, into CarLatticeSettings; what each accepts, refuses and prints.
+#include "gridcar/planners/CarLatticePlanner.h"
 #include "gridcar/planners/CarLatticeParams.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/planners/GridPlanner.h"
@@ -137,7 +138,7 @@ TEST(Settings, CarLatticePlannersDeclareTheTable)
     GridSetup s = test::carSetup(SpaceKind::SE2);
     for (const char *name : {"corner-astar", "improved-astar"})
     {
-        auto p = std::dynamic_pointer_cast<GridPlanner>(makePlanner(s.ss->getSpaceInformation(), name));
+        auto p = std::dynamic_pointer_cast<CarLatticePlanner>(makePlanner(s.ss->getSpaceInformation(), name));
         ASSERT_TRUE(p) << name;
         for (const auto &f : carLatticeSettingFields())
         {

@@ -62,7 +62,7 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
     std::string plannerList;
     for (const auto &n : plannerNames()) plannerList += (plannerList.empty() ? "" : ", ") + n;
     cmd->add_option("--planner", q.planner,
-                    plannerList + " (or NAME+smooth; OMPL's own names too, any case)" +
+                    plannerList + " (or NAME+smooth; OMPL's own names too, any case; the older corner-astar --param lattice=grid or mode=paper, and improved-astar --param lattice=grid, are aliases of the -grid names)" +
                         (plannerRequired ? std::string(". Required, here or in --params-file") : std::string()));
     q.cmd = cmd;
     cmd->add_option("--start", q.start,

@@ -52,10 +52,20 @@ void applyParam(ompl::base::Planner &planner, const std::string &name, const std
 
 ompl::base::PlannerPtr configurePlanner(const ompl::base::SpaceInformationPtr &si, const PlannerConfig &config)
 {
-    ompl::base::PlannerPtr planner = makePlanner(si, config.name);
+    PlannerParams params = config.params;
+    std::string name;
+    try
+    {
+        name = resolvePlannerAlias(config.name, params);  // the old `lattice=grid` / `mode=paper` command lines
+    }
+    catch (const std::invalid_argument &e)
+    {
+        throw InputError(e.what());
+    }
+    ompl::base::PlannerPtr planner = makePlanner(si, name);
     if (config.freeStartHeading && planner->params().hasParam("free_start_heading"))
         planner->params().setParam("free_start_heading", "1");
-    for (const auto &kv : config.params) applyParam(*planner, kv.first, kv.second);
+    for (const auto &kv : params) applyParam(*planner, kv.first, kv.second);
     if (config.smooth && !reportOf(*planner).smoothsItself) planner = std::make_shared<SmoothedPlanner>(planner);
     return planner;
 }

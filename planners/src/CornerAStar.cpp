@@ -75,7 +75,7 @@ struct CornerExpander
 class CornerNodes : public GridNodes
 {
 public:
-    explicit CornerNodes(const CornerAStar &p) : p_(p) {}
+    explicit CornerNodes(const CornerAStarGrid &p) : p_(p) {}
     std::size_t denseStates(const GridFamily &f) const override { return std::size_t(f.width()) * f.height() * 8; }
     std::vector<std::uint32_t> starts(const GridFamily &f) override
     {
@@ -102,59 +102,26 @@ public:
     }
 
 private:
-    const CornerAStar &p_;
+    const CornerAStarGrid &p_;
 };
 }  // namespace
 
-CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : GridPlanner(si, "corner-astar")
+CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : CornerWeighted(si, "corner-astar")
 {
-    weights_ = params_.weights;
-    declareParam<double>("corner_weight_45", this, &CornerAStar::setWeight45,
-                         &CornerAStar::weight45, "0.:0.1:50.");
-    declareParam<double>("corner_weight_90", this, &CornerAStar::setWeight90,
-                         &CornerAStar::weight90, "0.:0.1:100.");
-    declareParam<double>("corner_weight_135", this, &CornerAStar::setWeight135,
-                         &CornerAStar::weight135, "0.:0.1:200.");
-    declareParam<std::string>("weights", this, &CornerAStar::setWeightMode, &CornerAStar::weightMode, "paper,physics");
-    declareParam<std::string>("lattice", this, &CornerAStar::setLattice, &CornerAStar::lattice, "car,grid");
-    declareParam<std::string>("mode", this, &CornerAStar::setMode, &CornerAStar::mode, "drivable,paper");
     declareParam<std::string>("cost", this, &CornerAStar::setCost, &CornerAStar::cost, "corners,time");
-    declareCarLatticeParams();
-}
-
-void CornerAStar::setMode(const std::string &m)
-{
-    if (m != "drivable" && m != "paper")
-        throw std::invalid_argument("corner-astar: mode must be 'drivable' or 'paper', got '" + printable(m) + "'");
-    params_.carLattice = m == "drivable";
-    parameterSet("mode");
 }
 
 void CornerAStar::setCost(const std::string &c)
 {
     if (c != "corners" && c != "time")
         throw std::invalid_argument("corner-astar: cost must be 'corners' or 'time', got '" + printable(c) + "'");
-    params_.timeCost = c == "time";
+    timeCost_ = c == "time";
     parameterSet("cost");
 }
 
-void CornerAStar::setLattice(const std::string &l)
-{
-    if (l != "car" && l != "grid")
-        throw std::invalid_argument("corner-astar: lattice must be 'car' or 'grid', got '" + printable(l) + "'");
-    params_.carLattice = l == "car";
-    parameterSet("lattice");
-}
+CornerAStarGrid::CornerAStarGrid(const ompl::base::SpaceInformationPtr &si) : CornerWeighted(si, "corner-astar-grid") {}
 
-double CornerAStar::turnWeight(double rad) const
-{
-    const double deg = std::abs(rad) * 180.0 / M_PI;
-    const double table[4] = {0.0, weights_.w45, weights_.w90, weights_.w135};
-    if (deg >= 135.0) return weights_.w135 * deg / 135.0;
-    const int k = int(deg / 45.0);
-    const double t = deg / 45.0 - k;
-    return table[k] + t * (table[k + 1] - table[k]);
-}
+std::unique_ptr<GridNodes> CornerAStarGrid::makeGridNodes() { return std::make_unique<CornerNodes>(*this); }
 
 namespace
 {
@@ -223,57 +190,8 @@ private:
 
 std::unique_ptr<LatticeCostModel> CornerAStar::carCost() const
 {
-    if (params_.timeCost) return std::make_unique<TimeCost>(vehicle());
+    if (timeCost_) return std::make_unique<TimeCost>(vehicle());
     return std::make_unique<CornerCost>(*this);
 }
-
-namespace
-{
-double checkedWeight(double w, const char *name)
-{
-    if (!std::isfinite(w) || w < 0.0)
-        throw std::invalid_argument(std::string("corner-astar: ") + name + " must be a finite number >= 0 (metres)");
-    return w;
-}
-}  // namespace
-
-void CornerAStar::setWeight45(double w)
-{
-    params_.weights.w45 = checkedWeight(w, "corner_weight_45");
-    params_.weightSet[0] = true;
-    parameterSet("corner_weight_45");
-}
-void CornerAStar::setWeight90(double w)
-{
-    params_.weights.w90 = checkedWeight(w, "corner_weight_90");
-    params_.weightSet[1] = true;
-    parameterSet("corner_weight_90");
-}
-void CornerAStar::setWeight135(double w)
-{
-    params_.weights.w135 = checkedWeight(w, "corner_weight_135");
-    params_.weightSet[2] = true;
-    parameterSet("corner_weight_135");
-}
-
-void CornerAStar::setWeightMode(const std::string &mode)
-{
-    if (mode != "paper" && mode != "physics")
-        throw std::invalid_argument("corner-astar: weights must be 'paper' or 'physics', got '" + printable(mode) + "'");
-    params_.physics = mode == "physics";
-    parameterSet("weights");
-}
-
-void CornerAStar::setup()
-{
-    GridPlanner::setup();
-    // the weights set explicitly, the others per `weights` (the same whenever they were set)
-    const CornerWeights base = params_.physics ? physicsCornerWeights(vehicle()) : CornerWeights();  // no checker: the default car
-    weights_.w45 = params_.weightSet[0] ? params_.weights.w45 : base.w45;
-    weights_.w90 = params_.weightSet[1] ? params_.weights.w90 : base.w90;
-    weights_.w135 = params_.weightSet[2] ? params_.weights.w135 : base.w135;
-}
-
-std::unique_ptr<GridNodes> CornerAStar::makeGridNodes() { return std::make_unique<CornerNodes>(*this); }
 
 }  // namespace gridcar

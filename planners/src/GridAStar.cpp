@@ -88,7 +88,7 @@ private:
 }  // namespace
 
 GridAStar::GridAStar(const ompl::base::SpaceInformationPtr &si, GridHeuristic h, const std::string &name)
-  : GridPlanner(si, name), heuristic_(h)
+  : GridLatticePlanner(si, name), heuristic_(h)
 {
 }
 

@@ -1,6 +1,6 @@
 /// @file GridPlanner.cpp
-/// @brief GridPlanner: set-up of the world and the search family, one solve() for both
-/// families, PlannerData.
+/// @brief GridPlanner: set-up of the world, one solve() over the subclass's search family,
+/// PlannerData, the report.
 #include "gridcar/planners/GridPlanner.h"
 
 #include "gridcar/planners/SmoothedPlanner.h"
@@ -16,12 +16,6 @@
 
 namespace gridcar
 {
-namespace
-{
-/// Curves the path shortcut may try per query (CarLatticeSearch::shortcut()).
-constexpr int kShortcutCurves = 3000;
-}  // namespace
-
 GridPlanner::GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name)
   : ompl::base::Planner(si, name), support_(*this), goals_(si), dataStates_(si)
 {
@@ -30,8 +24,6 @@ GridPlanner::GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::s
     specs_.directed = true;
     specs_.multithreaded = false;
     specs_.recognizedGoal = ompl::base::GOAL_REGION;
-    declareParam<bool>("allow_corner_cutting", this, &GridPlanner::setAllowCornerCutting,
-                       &GridPlanner::allowCornerCutting, "0,1");
     declareParam<bool>("free_start_heading", this, &GridPlanner::setFreeStartHeading,
                        &GridPlanner::freeStartHeading, "0,1");
     declareParam<double>("turning_radius", this, &GridPlanner::setTurningRadius, &GridPlanner::turningRadiusParam,
@@ -45,18 +37,6 @@ GridPlanner::GridPlanner(const ompl::base::SpaceInformationPtr &si, const std::s
 
 GridPlanner::~GridPlanner() = default;
 
-void GridPlanner::checkParametersAct() const
-{
-    const bool car = usesCarLattice();
-    const std::vector<std::string> other = car ? gridLatticeOnlyParams() : carLatticeOnlyParams();
-    for (const std::string &p : setParams_)
-        if (std::find(other.begin(), other.end(), p) != other.end())
-            throw std::invalid_argument(getName() + ": parameter '" + p + "' acts only on the " +
-                                        (car ? "grid lattice (the paper's search on the map's cells: lattice=grid)"
-                                             : "car lattice (lattice=car)") +
-                                        ", and this planner is configured for the " + (car ? "car" : "grid") + " lattice");
-}
-
 const ompl::base::State *GridPlanner::currentStart()
 {
     pis_.restart();
@@ -65,7 +45,6 @@ const ompl::base::State *GridPlanner::currentStart()
 
 void GridPlanner::setup()
 {
-    checkParametersAct();
     ompl::base::Planner::setup();
     if (!dynamic_cast<const ompl::base::SE2StateSpace *>(si_->getStateSpace().get()))
         throw ompl::Exception(getName(), "needs a state space derived from ompl::base::SE2StateSpace (plain SE2, "
@@ -83,32 +62,7 @@ void GridPlanner::setup()
     genericVehicle_ = genericVehicle();
     space_ = std::dynamic_pointer_cast<GridSE2StateSpace>(si_->getStateSpace());
     if (!space_) space_ = ownGridSpace();  // any other SE(2) space: the map's cells, or cells from the parameters
-    tooBig_.clear();
-    if (usesCarLattice())
-    {
-        if (params_.car.reverse == AutoSwitch::On && onDubinsSpace())
-            throw std::invalid_argument(getName() + ": reverse=on on a Dubins space, which drives forwards only (use "
-                                                    "reverse=auto or the Reeds-Shepp space)");
-        // turns=auto: the lattice's clothoid turns for routes, its arcs for a goal pose to meet
-        const CarLatticeConfig cfg = carLatticeConfig();
-        CarLatticeConfig arcs = cfg;
-        arcs.curvatureRate = 0.0;
-        const CarLatticeConfig *forPoses = params_.car.turns == TurnShape::Auto && cfg != arcs ? &arcs : nullptr;
-        if (params_.car.primitives == PrimitiveSet::Auto)
-        {
-            const CarLatticeConfig hybrid = carLatticeConfig(true);
-            car_.setup(cfg, collision_, &hybrid, forPoses);
-        }
-        else
-            car_.setup(cfg, collision_, nullptr, forPoses);
-        return;  // no per-cell move cache or dense search arrays on the car lattice
-    }
-    std::unique_ptr<GridNodes> nodes = makeGridNodes();
-    if (!nodes) throw ompl::Exception(getName(), "has no grid-lattice node type (it searches the car lattice only)");
-    grid_.setAllowCornerCutting(params_.allowCornerCutting);
-    // the grid lattice's per-map arrays are refused (solve() then returns ABORT with the
-    // reason) when they alone would exceed max_memory_mb
-    tooBig_ = grid_.setup(space_, collision_, std::move(nodes), params_.maxMemoryMb);
+    setupFamily(collision_);
 }
 
 void GridPlanner::clear()
@@ -116,8 +70,7 @@ void GridPlanner::clear()
     ompl::base::Planner::clear();
     dataStates_.clear();
     support_.resetStatistics();
-    grid_.clear();
-    // the move cache depends only on the map and the vehicle: kept
+    clearFamily();
 }
 
 ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminationCondition &timeLimit)
@@ -132,9 +85,9 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
     dataStates_.clear();  // PlannerData states are cached by search state, which a new search renumbers
     const ompl::base::PlannerTerminationCondition ptc = support_.withMemoryBound(timeLimit, params_.maxMemoryMb);
     const bool car = usesCarLattice();
-    if (!car && !tooBig_.empty())
+    if (const std::string why = cannotSearch(); !why.empty())
     {
-        support_.setStopReason(tooBig_);
+        support_.setStopReason(why);
         return support_.memoryStatus(false);
     }
     support_.resetStatistics();
@@ -150,29 +103,7 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
         goals_.read(pdef_->getGoal().get(), matchGoalHeading(), /*anyHeading=*/car, *collision_, getName(), goal_);
     if (goal != PlannerStatus::UNKNOWN) return goal;
     const auto cancelled = [&] { return ptc.eval(); };
-    FamilyRun run;
-    if (car)
-    {
-        const std::unique_ptr<LatticeCostModel> cost = carCost();
-        CarLatticeQuery terms;
-        terms.settings = params_.car;
-        terms.freeStartHeading = params_.freeStartHeading;
-        terms.cuspPenalty = cuspPenalty() * cost->costPerMetreOfPenalty();
-        terms.curveWithin = curveWithin();
-        if (params_.car.costLayerWeight > 0)
-        {
-            if (checker_ && checker_->grid().hasCosts())
-                terms.layer = &checker_->grid();
-            else
-                OMPL_WARN("%s: cost_layer_weight is set but the map has no cost layer (a map_server map in scale or "
-                          "raw mode, on gridcar's validity checker): it has no effect",
-                          getName().c_str());
-        }
-        const CarPostProcessing post{shortcutting() ? kShortcutCurves : 0, curvatureRate(), 1.0 / turningRadius()};
-        run = car_.solve(si_, start, std::move(terms), post, goal_, *cost, cancelled, support_.progress());
-    }
-    else
-        run = grid_.solve(si_, start, params_.freeStartHeading, goal_, cancelled, support_.progress());
+    FamilyRun run = searchFamily(start, goal_, cancelled, support_.progress());
     support_.record(run.expanded, run.cost, run.searchSeconds);
     SearchEnd &end = run.end;
     if (end.path)
@@ -223,10 +154,7 @@ void GridPlanner::getPlannerData(ompl::base::PlannerData &data) const
 {
     ompl::base::Planner::getPlannerData(data);
     if (!space_) return;
-    if (usesCarLattice())
-        car_.plannerData(data, dataStates_);
-    else
-        grid_.plannerData(data, dataStates_);
+    familyData(data, dataStates_);
 }
 
 }  // namespace gridcar

@@ -69,19 +69,9 @@ const std::vector<PlannerEntry> &plannerRegistry()
         {"improved-astar", "paper I's improved A* on the car lattice (drivable paths)", true,
          [](const SI &si) { return std::make_shared<ImprovedAStar>(si); }},
         {"corner-astar-grid", "paper C's search as published: (cell, direction) on the map's cells", true,
-         [](const SI &si) {
-             auto p = std::make_shared<CornerAStar>(si);
-             p->setLattice("grid");
-             p->setName("corner-astar-grid");
-             return p;
-         }},
+         [](const SI &si) { return std::make_shared<CornerAStarGrid>(si); }},
         {"improved-astar-grid", "paper I's search as published: (cell, direction, run) on the map's cells, smoothed", true,
-         [](const SI &si) {
-             auto p = std::make_shared<ImprovedAStar>(si);
-             p->setLattice("grid");
-             p->setName("improved-astar-grid");
-             return p;
-         }},
+         [](const SI &si) { return std::make_shared<ImprovedAStarGrid>(si); }},
         {"rrt", "OMPL's RRT", false, [](const SI &si) { return std::make_shared<og::RRT>(si); }},
         {"rrtconnect", "OMPL's RRTConnect", false, [](const SI &si) { return std::make_shared<og::RRTConnect>(si); }},
         {"rrtstar", "OMPL's RRT*", false, [](const SI &si) { return std::make_shared<og::RRTstar>(si); }},
@@ -170,6 +160,42 @@ bool isPlannerName(const std::string &name)
     std::string base = name;
     if (!splitSuffix(name, base, "+smooth")) splitSuffix(name, base, "+simplify");
     return findPlanner(base) != nullptr;
+}
+
+std::string resolvePlannerAlias(const std::string &name, std::vector<std::pair<std::string, std::string>> &params)
+{
+    std::string base = name, suffix;
+    for (const char *s : {"+smooth", "+simplify"})
+        if (splitSuffix(name, base, s))
+        {
+            suffix = s;
+            break;
+        }
+    const std::string key = lowered(base);
+    const bool corner = key == "corner-astar" || key == "corner-astar-grid";
+    const bool improved = key == "improved-astar" || key == "improved-astar-grid";
+    if (!corner && !improved) return name;
+    // the family the old switches ask for, if any: "grid", "car" or ""
+    std::string family;
+    std::vector<std::pair<std::string, std::string>> rest;
+    for (const auto &[k, v] : params)
+    {
+        const std::string value = lowered(v);
+        if (k == "lattice" && (value == "grid" || value == "car"))
+            family = value;
+        else if (corner && k == "mode" && (value == "paper" || value == "drivable"))
+            family = value == "paper" ? "grid" : "car";
+        else
+            rest.push_back({k, v});
+    }
+    if (family.empty()) return name;
+    const bool gridName = key.size() > 5 && key.compare(key.size() - 5, 5, "-grid") == 0;
+    const std::string stem = gridName ? key.substr(0, key.size() - 5) : key;
+    if (gridName && family == "car")
+        throw std::invalid_argument("planner " + key + " searches the map's cells; the car lattice is " + stem +
+                                    " (lattice=car does not apply to it)");
+    params = rest;
+    return (family == "grid" ? stem + "-grid" : stem) + suffix;
 }
 
 ompl::base::PlannerPtr makePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name)

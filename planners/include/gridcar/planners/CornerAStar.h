@@ -3,36 +3,54 @@
 /// @brief Paper C's corner-weighted A*.
 
 #include "gridcar/planners/CornerWeights.h"
-#include "gridcar/planners/GridPlanner.h"
+#include "gridcar/planners/CarLatticePlanner.h"
+#include "gridcar/planners/GridLatticePlanner.h"
 #include "gridcar/vehicle/Dynamics.h"
 
 #include <string>
 
 namespace gridcar
 {
-/// corner A*'s parameters (see CornerAStar).
-struct CornerAStarParams
+/**
+ * @brief corner A*'s weights as a part of a planner of either family: the weight settings
+ * (CornerWeightSettings, declared from their table) and the weights in use, resolved by
+ * setup() for the planner's vehicle.
+ */
+template <class Family>
+class CornerWeighted : public Family
 {
-    CornerWeights weights;  ///< `corner_weight_45/90/135` (paper C's values until set)
-    bool weightSet[3]{false, false, false};  ///< which of them were set explicitly (45, 90, 135)
-    bool physics{false};     ///< `weights` = physics
-    bool carLattice{true};   ///< `lattice` = car (`mode` = drivable)
-    bool timeCost{false};    ///< `cost` = time: driving time (s) instead of length + corner weights
+public:
+    CornerWeighted(const ompl::base::SpaceInformationPtr &si, const std::string &name) : Family(si, name)
+    {
+        declareSettings<CornerWeightSettings>(this->params(), name, cornerWeightFields(), cw_,
+                                              [this](const std::string &n) { this->parameterSet(n); });
+    }
+    void setup() override
+    {
+        Family::setup();
+        weights_ = cw_.resolve(this->vehicle());  // no checker: the default car's dynamics
+    }
+    /// The weights in use after setup() (paper C's before).
+    const CornerWeights &weights() const { return weights_; }
+    /// The weight settings as set.
+    const CornerWeightSettings &cornerSettings() const { return cw_; }
+
+private:
+    CornerWeightSettings cw_;
+    CornerWeights weights_;
 };
 
 /**
  * @brief Corner-weighted A* (paper C).
  *
- * `lattice = car` (default; the older name `mode = drivable`): the car lattice (search/CarLattice.h, the successors improved
- * A* uses; `lattice_cell`, `headings` 8 or 16, default 16), step cost = primitive length +
+ * On the car lattice (search/CarLattice.h, the successors improved A* uses; `lattice_cell`,
+ * `headings` 8 or 16, default 16; CarLatticePlanner): step cost = primitive length +
  * the corner weight of its heading change, interpolated linearly in the turn angle between
  * 0 (0 degrees) and the 45 / 90 / 135-degree weights below (a 22.5-degree turn costs half the
  * 45-degree weight; two 45-degree turns cost 2 x w45, a little less than w90). Its paths have
  * curvature <= K_max and a free footprint as searched.
  *
- * `lattice = grid` (`mode = paper`; the planner `corner-astar-grid`): paper C's 8-connected search on the map's cells: state = (cell, arrival direction); step cost = step
- * length + corner weight of the heading change (0 / 45 / 90 / 135 degrees). A 180-degree
- * reversal is never a successor. Heuristic: octile distance (admissible: weights are >= 0).
+ * Paper C's own search on the map's cells is CornerAStarGrid (`corner-astar-grid`).
  *
  * Parameters (declareParam): `corner_weight_45` (2.7 m), `corner_weight_90` (7.0 m),
  * `corner_weight_135` (11.3 m: the paper gives none; we continue its two values linearly in the
@@ -48,7 +66,7 @@ struct CornerAStarParams
  * scaled by 1 / tan(theta / 2)). A `corner_weight_*` set explicitly is used as given with either
  * `weights`, whenever it is set (before or after setup()); the others come from `weights`.
  *
- * `cost = time` (car lattice only; default `corners`): paper C's future work, the driving time
+ * `cost = time` (default `corners`): paper C's future work, the driving time
  * itself as the search cost, in seconds: each primitive costs its length at the speed limit of
  * its curvature at every sample, min(v_max, sqrt(min(mu g, a_lat) / kappa)), plus the time lost
  * braking from v_max to the speed of its sharpest curvature and accelerating after it
@@ -65,51 +83,43 @@ struct CornerAStarParams
  * Paper C: "Shortest driving-time path planning considering UGV driving characteristics and
  * driving time, and its driving algorithm", JKROS 2014.
  */
-class CornerAStar : public GridPlanner
+class CornerAStar : public CornerWeighted<CarLatticePlanner>
 {
 public:
     explicit CornerAStar(const ompl::base::SpaceInformationPtr &si);
 
-    void setup() override;
-    /// The weights in use after setup().
-    const CornerWeights &weights() const { return weights_; }
-    /// corner A*'s own parameters.
-    const CornerAStarParams &cornerParams() const { return params_; }
-
-    double weight45() const { return params_.weights.w45; }
-    double weight90() const { return params_.weights.w90; }
-    double weight135() const { return params_.weights.w135; }
-    void setWeight45(double w);
-    void setWeight90(double w);
-    void setWeight135(double w);
-    void setWeightMode(const std::string &mode);
-    std::string weightMode() const { return params_.physics ? "physics" : "paper"; }
-    std::string mode() const { return params_.carLattice ? "drivable" : "paper"; }
-    void setMode(const std::string &m);
-    /// `lattice`: car (= mode drivable) or grid (= mode paper), the switch's name shared with
-    /// improved-astar.
-    std::string lattice() const { return params_.carLattice ? "car" : "grid"; }
-    void setLattice(const std::string &l);
-    bool usesCarLattice() const override { return params_.carLattice; }
     /// `cost`: corners (length + corner weights, paper C) or time (driving time, seconds).
-    std::string cost() const { return params_.timeCost ? "time" : "corners"; }
+    std::string cost() const { return timeCost_ ? "time" : "corners"; }
     void setCost(const std::string &c);
     /// Corner weight (m) of a heading change of @p rad radians (linear between the table's).
-    double turnWeight(double rad) const;
+    double turnWeight(double rad) const { return gridcar::turnWeight(weights(), rad); }
 
 protected:
-    std::vector<std::string> carLatticeOnlyParams() const override
-    {
-        std::vector<std::string> p = GridPlanner::carLatticeOnlyParams();
-        p.push_back("cost");
-        return p;
-    }
-    std::unique_ptr<GridNodes> makeGridNodes() override;
     std::unique_ptr<LatticeCostModel> carCost() const override;
 
 private:
-    CornerAStarParams params_;
-    CornerWeights weights_;  ///< in use (setup(): params_.weights where set, else per `weights`)
+    bool timeCost_{false};  ///< `cost` = time: driving time (s) instead of length + corner weights
+};
+
+/**
+ * @brief Paper C's corner-weighted A* as published, on the map's cells (`corner-astar-grid`;
+ * the older command lines `corner-astar lattice=grid` and `corner-astar mode=paper`): paper
+ * C's 8-connected search: state = (cell, arrival direction); step cost = step length + corner
+ * weight of the heading change (0 / 45 / 90 / 135 degrees, the weights of CornerAStar). A
+ * 180-degree reversal is never a successor. Heuristic: octile distance (admissible: weights
+ * are >= 0). Its paths are cell polylines, not drivable curves.
+ *
+ * @par External documentation
+ * Paper C: "Shortest driving-time path planning considering UGV driving characteristics and
+ * driving time, and its driving algorithm", JKROS 2014.
+ */
+class CornerAStarGrid : public CornerWeighted<GridLatticePlanner>
+{
+public:
+    explicit CornerAStarGrid(const ompl::base::SpaceInformationPtr &si);
+
+protected:
+    std::unique_ptr<GridNodes> makeGridNodes() override;
 };
 
 }  // namespace gridcar

@@ -3,7 +3,7 @@
 /// @brief The baseline grid searches: Dijkstra and A* with Manhattan, Euclidean and octile
 /// heuristics.
 
-#include "gridcar/planners/GridPlanner.h"
+#include "gridcar/planners/GridLatticePlanner.h"
 
 namespace gridcar
 {
@@ -25,7 +25,7 @@ enum class GridHeuristic
  * P. Hart, N. Nilsson, B. Raphael, A Formal Basis for the Heuristic Determination of Minimum
  * Cost Paths, 1968. Paper I (Yao et al. 2020), section 4, the baselines of its tables.
  */
-class GridAStar : public GridPlanner
+class GridAStar : public GridLatticePlanner
 {
 public:
     GridAStar(const ompl::base::SpaceInformationPtr &si, GridHeuristic h, const std::string &name);

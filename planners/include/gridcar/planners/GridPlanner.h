@@ -1,15 +1,13 @@
 #pragma once
 /// @file GridPlanner.h
-/// @brief The OMPL planner class of gridcar's searches: parameters, the world (space,
-/// collision model), one solve() over a search family (GridFamily or CarFamily), the shared
-/// solver support.
+/// @brief The common base of gridcar's OMPL planners: the common parameters, the world
+/// (space, collision model), the goal, one solve() over the search family a subclass brings
+/// (GridLatticePlanner, CarLatticePlanner), the shared solver support.
 
 #include "gridcar/collision/FootprintChecker.h"
-#include "gridcar/planners/CarFamily.h"
 #include "gridcar/planners/GoalAdapter.h"
 #include "gridcar/planners/GridFamily.h"
 #include "gridcar/planners/PlannerReport.h"
-#include "gridcar/planners/search/CarLatticeSettings.h"
 #include "gridcar/planners/SolverSupport.h"
 #include "gridcar/spaces/GridSE2StateSpace.h"
 
@@ -18,7 +16,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,7 +25,6 @@ namespace gridcar
 /// The parameters every gridcar planner declares (see GridPlanner for each).
 struct GridPlannerParams
 {
-    bool allowCornerCutting{false};  ///< `allow_corner_cutting` (grid lattice)
     bool freeStartHeading{false};    ///< `free_start_heading`
     /// `match_goal_heading`; unset (the default): true on the car lattice (a goal pose is
     /// reached with its yaw), false on the grid lattice (the papers' searches end at the goal cell)
@@ -36,19 +32,16 @@ struct GridPlannerParams
     double turningRadius{0.0};       ///< `turning_radius`, m; 0 = automatic
     double maxMemoryMb{8192.0};      ///< `max_memory_mb`; 0 = none
     double latticeCell{0.0};         ///< `lattice_cell`, m; 0 = automatic
-    /// The car lattice's settings (its planners declare them: CarLatticeParams.h); the search
-    /// reads them as they are (CarLatticeQuery::settings)
-    CarLatticeSettings car;
 };
 
 /**
- * @brief Base of gridcar's planners: an ompl::base::Planner that searches one of two families,
- * the grid lattice (GridFamily, over a node type the planner supplies: makeGridNodes()) or the
- * car lattice (CarFamily, with the cost model the planner supplies: carCost()), chosen by
- * usesCarLattice(). What both share is composed in: the world (the SE(2) space's lattice
- * geometry and one collision model, CarCollision: gridcar's FootprintChecker or any OMPL
- * validity checker), the goal (GoalAdapter), the solver support (SolverSupport: memory
- * bound, statistics and progress properties, the status rule).
+ * @brief Base of gridcar's planners: an ompl::base::Planner over one search family that the
+ * subclass brings, the grid lattice (GridLatticePlanner: GridFamily over a node type) or the
+ * car lattice (CarLatticePlanner: CarFamily over a cost model and a primitive set). What both
+ * share is here, by composition: the world (the SE(2) space's lattice geometry and one
+ * collision model, CarCollision: gridcar's FootprintChecker or any OMPL validity checker), the
+ * goal (GoalAdapter), the solver support (SolverSupport: memory bound, statistics and progress
+ * properties, the status rule), the typed report (PlannerReport).
  *
  * Start: the start state (its yaw, or a free heading with `free_start_heading` = true); an
  * invalid start is INVALID_START. Goals: a GoalState (its heading if `match_goal_heading`,
@@ -59,8 +52,7 @@ struct GridPlannerParams
  * set another validity checker or motion validator since setup().
  *
  * Every parameter setter validates its value (std::invalid_argument), and redoes set-up
- * before the next solve(); a parameter set explicitly that does not act in the family the
- * planner is configured for makes setup() throw std::invalid_argument with the reason.
+ * before the next solve(). A planner declares only the parameters that act in it.
  */
 class GridPlanner : public ompl::base::Planner, public ReportingPlanner
 {
@@ -75,10 +67,6 @@ public:
 
     /// All common parameters.
     const GridPlannerParams &commonParams() const { return params_; }
-    bool allowCornerCutting() const { return params_.allowCornerCutting; }
-    /// Grid lattice: a diagonal move may cut past a blocked side cell (default false: the
-    /// Moving AI rule).
-    void setAllowCornerCutting(bool v);
     /// A GoalState's heading must be matched: as set, else true on the car lattice (a goal pose
     /// given with a yaw is reached with that yaw; for a free heading give a PositionGoal) and
     /// false on the grid lattice (the papers' searches: any arrival heading).
@@ -125,52 +113,25 @@ public:
     /// other SE(2) space cells of this size over the space's bounds (automatic: R_min / 4).
     double latticeCell() const { return params_.latticeCell; }
     void setLatticeCell(double m);
-    /// The car lattice's settings as set (`headings`, `heuristic_weight`, `reverse`,
-    /// `reverse_penalty`, `cusp_penalty`, `curve_heuristic`, `primitives`,
-    /// `continuous_curvature`, `curvature_rate`, `cost_layer_weight`, `turns`, `shortcut`: see
-    /// CarLatticeSettings and docs/planners.md). Each is an OMPL parameter of the planners that
-    /// search the car lattice, parsed in its setter (std::invalid_argument naming the value and
-    /// what is accepted); `reverse=on` is refused by setup() on a Dubins space, which is
-    /// forward-only. The `curve_heuristic` bound: `table` reads it from the lattice's
-    /// CurveTable (node offsets within 10 R_min per axis, kept across queries; none in the
-    /// hybrid fallback), `exact` computes it at every state within 30 R_min (CurveBound).
-    const CarLatticeSettings &carSettings() const { return params_.car; }
-    /// All car-lattice settings at once (each field that differs counts as set explicitly).
-    void setCarSettings(const CarLatticeSettings &s);
-    /// True if the car lattice drives backwards as configured (`reverse` on, or auto off a
-    /// Dubins space).
-    bool reversing() const;
-    /// True on OMPL's Dubins space (forward only: `reverse=on` refused, `auto` off).
-    bool onDubinsSpace() const;
-    /// Cost of a gear change (m of length-equivalent cost): `cusp_penalty` as set, else from
-    /// the vehicle: the distance its stop and start at a manoeuvring speed cost (see
-    /// gearChangeDistance()).
-    double cuspPenalty() const;
-    /// The range the curve heuristic covers (m; 0: off, or no car lattice set up).
-    double curveWithin() const;
-    /// True if a found path is shortcut as configured (`shortcut`, `reverse`).
-    bool shortcutting() const
-    {
-        return params_.car.shortcut == AutoSwitch::On || (params_.car.shortcut == AutoSwitch::Auto && reversing());
-    }
-    /// The curvature rate the car lattice's paths keep (1/m^2; 0: not smoothed).
-    double curvatureRate() const;
-
-    /// True if the planner, as configured, searches the car lattice.
-    virtual bool usesCarLattice() const { return false; }
-    /// The car lattice in use after setup() (null on the grid lattice).
-    const CarLatticeSearch *carSearch() const { return usesCarLattice() ? car_.search() : nullptr; }
-    /// The primitive set setup() gives the car lattice for this map and vehicle (with
-    /// `primitives=auto`, the lattice's; carLatticeConfig(true) is its hybrid fallback).
-    CarLatticeConfig carLatticeConfig() const;
-    CarLatticeConfig carLatticeConfig(bool hybrid) const;
+    /// True for the planners of the car lattice (CarLatticePlanner), false for those of the
+    /// grid lattice (GridLatticePlanner).
+    virtual bool usesCarLattice() const = 0;
 
 protected:
-    /// The grid lattice's node type for this planner as configured (called by setup() when
-    /// usesCarLattice() is false; default: none, a planner of the car lattice only).
-    virtual std::unique_ptr<GridNodes> makeGridNodes() { return nullptr; }
-    /// The cost the car lattice search minimises (default: length).
-    virtual std::unique_ptr<LatticeCostModel> carCost() const { return std::make_unique<LengthCost>(); }
+    /// The family's part of setup(), on the world it built: the space (space_), gridcar's
+    /// checker (checker_, or null) and @p collision, the collision model both families use.
+    virtual void setupFamily(const std::shared_ptr<CarCollision> &collision) = 0;
+    /// One search of the family from @p start to @p goal (solve() has read both, reset the
+    /// statistics and bounded the memory), polling @p cancelled and counting into @p progress.
+    virtual FamilyRun searchFamily(const ompl::base::State *start, const GoalTarget &goal,
+                                   const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress) = 0;
+    /// The explored graph of the last search, for getPlannerData().
+    virtual void familyData(ompl::base::PlannerData &data, PlannerDataStates &states) const = 0;
+    /// Frees the family's records of the last search (clear()).
+    virtual void clearFamily() {}
+    /// Why the family cannot search on the world set up (solve() then returns ABORT with it as
+    /// the stop reason), or "".
+    virtual std::string cannotSearch() const { return ""; }
     /// Hook for a planner that post-processes its path (default: none), polling @p ptc.
     /// Returns true when it replaced @p path.
     virtual bool postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc)
@@ -180,19 +141,12 @@ protected:
         return false;
     }
     /// Every parameter setter ends here: set-up is redone before the next solve() (whenever the
-    /// parameter is set, before or after setup()), and the name is remembered for setup()'s
-    /// check that it acts in the planner as configured.
+    /// parameter is set, before or after setup()).
     void parameterSet(const std::string &name)
     {
-        setParams_.insert(name);
+        (void)name;
         setup_ = false;
     }
-    /// Parameters that act only on the grid lattice (the papers' searches on the map's cells):
-    /// setup() refuses them, set explicitly, on a planner configured for the car lattice.
-    virtual std::vector<std::string> gridLatticeOnlyParams() const { return {"allow_corner_cutting"}; }
-    /// Parameters that act only on the car lattice: setup() refuses them on the grid lattice
-    /// (the car-lattice settings' names).
-    virtual std::vector<std::string> carLatticeOnlyParams() const;
     /// For postProcess(): the solution found is not to be reported exact (e.g. its smoothing
     /// was stopped by the termination condition), for the reason given (lastStopReason()).
     void markNotExact(const std::string &why) { notExactBecause_ = why; }
@@ -200,8 +154,6 @@ protected:
     /// only where it is to be matched), else why not (paper I's smoothing ends on the last
     /// leg's heading).
     static std::string endsOffGoal(const GoalTarget &goal, const Pose2 &end);
-    /// Declares the car lattice's settings (CarLatticeParams.h), for the planners that search it.
-    void declareCarLatticeParams();
     /// Size of the lattice cells of the grid family (after setup()).
     double cellSize() const { return space_->cellSize(); }
 
@@ -216,8 +168,6 @@ private:
     /// The first valid start of the problem, every solve() (OMPL's input states hand each
     /// start out once; a second solve() without clear() must still see it).
     const ompl::base::State *currentStart();
-    /// std::invalid_argument naming a parameter set explicitly that does not act as configured.
-    void checkParametersAct() const;
 
     GridPlannerParams params_;
     SolverSupport support_;
@@ -225,11 +175,7 @@ private:
     GoalTarget goal_;
     /// The collision model of the world setup() was built on (both families use it).
     std::shared_ptr<CarCollision> collision_;
-    GridFamily grid_;
-    CarFamily car_;
-    std::string tooBig_;  ///< set by setup() when the grid lattice's arrays exceed the bound
     std::string notExactBecause_;  ///< set through markNotExact() during one solve()
-    std::set<std::string> setParams_;  ///< every parameter set explicitly (parameterSet())
     std::shared_ptr<GridSE2StateSpace> ownSpace_;
     VehicleParams genericVehicle_;
     mutable PlannerDataStates dataStates_;  ///< for getPlannerData()

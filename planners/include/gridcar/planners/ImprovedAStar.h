@@ -3,10 +3,13 @@
 /// @brief Paper I's improved A* on the shared search core.
 
 #include "gridcar/path/PostProcess.h"
-#include "gridcar/planners/GridPlanner.h"
+#include "gridcar/planners/CarLatticePlanner.h"
+#include "gridcar/planners/GridLatticePlanner.h"
+#include "gridcar/planners/Settings.h"
 #include "gridcar/planners/SmoothedPlanner.h"
 
 #include <string>
+#include <vector>
 
 namespace gridcar
 {
@@ -15,13 +18,15 @@ namespace gridcar
  * heuristic, body-contour cost, obstacle-distance cost, turning-point adjustment and quadratic
  * Bezier smoothing.
  *
- * **Lattice** (`lattice`): `car` (default) searches the car lattice (search/CarLattice.h): its
- * own cell size (`lattice_cell`, automatic by default), 8 or 16 headings (`headings`, default
- * 16; paper I's 8 directions with 8), primitives of curvature
- * 0 or 1 / (1.01 R_min), footprint certified along every primitive, the obstacle-aware
- * heuristic, and a Dubins curve into the exact goal: its paths are drivable as searched, so
- * `smooth` does not apply. `grid` is the lattice described next, on the map's own cells, kept
- * to reproduce paper I's tables.
+ * Two planners: ImprovedAStar (`improved-astar`) searches the car lattice
+ * (search/CarLattice.h, CarLatticePlanner): its own cell size (`lattice_cell`, automatic by
+ * default), 8 or 16 headings (`headings`, default 16; paper I's 8 directions with 8),
+ * primitives of curvature 0 or 1 / (1.01 R_min), footprint certified along every primitive,
+ * the obstacle-aware heuristic, and a Dubins curve into the exact goal: its paths are drivable
+ * as searched. ImprovedAStarGrid (`improved-astar-grid`; the older command line
+ * `improved-astar lattice=grid`) is paper I's lattice described next, on the map's own cells,
+ * kept to reproduce paper I's tables. Both take `mode`, `delta` and `obstacle_cost`
+ * (ImprovedSettings); `heuristic`, `contour` and `smooth` are the grid search's.
  *
  * **Grid lattice.** State = (cell, heading of 8, straight run k). A successor keeps the heading or
  * turns it by 45 degrees (never more: a 90-degree corner takes two vertices), and a turn is
@@ -67,99 +72,130 @@ namespace gridcar
  * Paper I: Yang Yao et al., "Research on intelligent vehicle path planning based on improved A*
  * algorithm", 2020, sections 3.1-3.5.
  */
-/// improved A*'s parameters (see ImprovedAStar).
-struct ImprovedAStarParams
+/// The settings both of paper I's planners take (`mode`, `delta`, `obstacle_cost`; see
+/// ImprovedAStar), declared from one table (improvedSettingFields()).
+struct ImprovedSettings
 {
-    bool paperMode{true};          ///< `mode` = paper (else integral)
-    bool carLattice{true};         ///< `lattice` = car (else grid)
-    std::string heuristic{"auto"}; ///< `heuristic` (grid lattice): auto, arc, euclidean, octile
-    double delta{1.0};             ///< `delta`, the obstacle-cost gain
-    bool voronoi{false};           ///< `obstacle_cost` = voronoi (else inverse)
-    bool points{false};            ///< `contour` = points (else fcl; grid lattice)
-    bool smooth{true};             ///< `smooth` (grid lattice)
+    bool paperMode{true};  ///< `mode` = paper (else integral)
+    double delta{1.0};     ///< `delta`, the obstacle-cost gain
+    bool voronoi{false};   ///< `obstacle_cost` = voronoi (else inverse)
 };
 
-class ImprovedAStar : public GridPlanner
+/// The table of ImprovedSettings (Settings.h).
+const std::vector<SettingField<ImprovedSettings>> &improvedSettingFields();
+
+/// Paper I's evaluation, eq. 4-5: f = g' + h (1 + o) + s with g' = g if g < o, else 0; s = 0
+/// (successors with s = infinity are never generated).
+inline double paperPriority(double g, double h, double o) { return (g >= o ? 0.0 : g) + h * (1.0 + o); }
+
+/**
+ * @brief Paper I's obstacle cost o(n) (eq. 8) on the world a planner set up: delta / d_O
+ * (`inverse`) or delta x Dolgov's Voronoi field (`voronoi`) from the map's distance field; on
+ * another validity checker delta / its clearance() if it computes one, else 0.
+ */
+class ObstacleCost
+{
+public:
+    ObstacleCost() = default;
+    ObstacleCost(const ObstacleCost &) = delete;
+    ObstacleCost &operator=(const ObstacleCost &) = delete;
+    ~ObstacleCost();
+    /// The world of @p si (gridcar's @p checker, or null); ompl::Exception naming @p planner
+    /// when `voronoi` needs gridcar's checker and has none.
+    void setup(const ompl::base::SpaceInformationPtr &si, const FootprintChecker *checker, const std::string &planner);
+    /// o(n) at a world pose.
+    double atPose(const Pose2 &p) const;
+    /// o(n) at a cell of @p space.
+    double atCell(const GridSE2StateSpace &space, int col, int row) const;
+
+    ImprovedSettings settings;  ///< as set (the planner's parameters)
+
+private:
+    ompl::base::SpaceInformationPtr si_;
+    const FootprintChecker *checker_{nullptr};
+    mutable ompl::base::State *scratch_{nullptr};
+};
+
+/// Paper I's improved A* on the car lattice (see the file's comment above).
+class ImprovedAStar : public CarLatticePlanner
 {
 public:
     explicit ImprovedAStar(const ompl::base::SpaceInformationPtr &si);
-    ~ImprovedAStar() override;
+    void setup() override;
+    const ImprovedSettings &improvedSettings() const { return obstacles_.settings; }
+    /// Paper I's evaluation (kept as the class's name for it; see gridcar::paperPriority()).
+    static double paperPriority(double g, double h, double o) { return gridcar::paperPriority(g, h, o); }
+    /// o(n) at a world pose (after setup()).
+    double obstacleCostAtPose(const Pose2 &p) const { return obstacles_.atPose(p); }
+    /// Its car-lattice paths are final (drivable as searched): it needs no smoothing wrapper.
+    PlannerReport lastReport() const override;
+
+protected:
+    std::unique_ptr<LatticeCostModel> carCost() const override;
+
+private:
+    ObstacleCost obstacles_;
+};
+
+/// Paper I's improved A* as published, on the map's cells (see the file's comment above).
+class ImprovedAStarGrid : public GridLatticePlanner
+{
+public:
+    explicit ImprovedAStarGrid(const ompl::base::SpaceInformationPtr &si);
 
     void setup() override;
     void clear() override;
-    /// improved A*'s own parameters.
-    const ImprovedAStarParams &improvedParams() const { return ip_; }
+    const ImprovedSettings &improvedSettings() const { return obstacles_.settings; }
 
-    std::string mode() const { return ip_.paperMode ? "paper" : "integral"; }
-    void setMode(const std::string &m);
-    std::string heuristic() const { return ip_.heuristic; }
+    std::string heuristic() const { return heuristic_; }
+    /// `heuristic`: auto, arc, euclidean, octile; std::invalid_argument otherwise.
     void setHeuristic(const std::string &h);
-    double delta() const { return ip_.delta; }
-    void setDelta(double d);
-    std::string obstacleCost() const { return ip_.voronoi ? "voronoi" : "inverse"; }
-    void setObstacleCost(const std::string &c);
-    std::string contour() const { return ip_.points ? "points" : "fcl"; }
+    std::string contour() const { return points_ ? "points" : "fcl"; }
+    /// `contour`: fcl or points; std::invalid_argument otherwise.
     void setContour(const std::string &c);
-    bool smooth() const { return ip_.smooth; }
+    bool smooth() const { return smooth_; }
     void setSmooth(bool s)
     {
-        ip_.smooth = s;
+        smooth_ = s;
         parameterSet("smooth");
     }
-    std::string lattice() const { return ip_.carLattice ? "car" : "grid"; }
-    void setLattice(const std::string &l);
-    bool usesCarLattice() const override { return ip_.carLattice; }
-    /// heuristic, smooth and contour are the grid search's (paper I's section 3), refused on
-    /// the car lattice, with allow_corner_cutting.
-    std::vector<std::string> gridLatticeOnlyParams() const override
-    {
-        return {"allow_corner_cutting", "heuristic", "smooth", "contour"};
-    }
 
-    /// Paper I's evaluation, eq. 4-5: f = g' + h (1 + o) + s with g' = g if g < o, else 0;
-    /// s = 0 (successors with s = infinity are never generated).
-    static double paperPriority(double g, double h, double o) { return (g >= o ? 0.0 : g) + h * (1.0 + o); }
     /// Straight steps needed before a turn, for straight (0) and diagonal (1) headings.
     int stepsBeforeTurn(int diagonal) const { return need_[diagonal ? 1 : 0]; }
     /// o(n) at a cell (after setup()).
-    double obstacleCostAt(int col, int row) const;
-    /// o(n) at a world pose: delta / d_O (or delta rho_V) from the map's distance field; with
-    /// another validity checker delta / its clearance() if it computes one, else 0.
-    double obstacleCostAtPose(const Pose2 &p) const;
+    double obstacleCostAt(int col, int row) const { return obstacles_.atCell(*space_, col, row); }
     /// Heuristic value from a cell to the goal cell, metres (after setup(), in the current mode).
     double heuristicAt(int col, int row, int goalCol, int goalRow) const;
-    /// The last solve()'s report with paper I's smoothing (on the grid lattice).
+    /// The last solve()'s report with paper I's smoothing.
     PlannerReport lastReport() const override;
     /// Post-processing report of the last solve() (empty when smooth = false).
-    const SmoothingResult &lastSmoothing() const
-    {
-        static const SmoothingResult none;
-        return ip_.carLattice ? none : lastSmoothing_;
-    }
+    const SmoothingResult &lastSmoothing() const { return lastSmoothing_; }
     /// The lattice path of the last solve() before post-processing (world poses).
     const std::vector<Pose2> &lastLatticePath() const { return latticePath_; }
     /// The path before smoothing (world poses; empty when nothing was smoothed).
     const std::vector<Pose2> &lastRawPath() const
     {
         static const std::vector<Pose2> none;
-        return !ip_.carLattice && ip_.smooth && !lastSmoothing_.path.empty() ? latticePath_ : none;
+        return smooth_ && !lastSmoothing_.path.empty() ? latticePath_ : none;
     }
 
 protected:
     std::unique_ptr<GridNodes> makeGridNodes() override;
     bool postProcess(ompl::geometric::PathGeometric &path, const ompl::base::PlannerTerminationCondition &ptc) override;
-    std::unique_ptr<LatticeCostModel> carCost() const override;
 
 private:
     friend struct ImprovedExpander;
     friend class ImprovedNodes;
-    mutable ompl::base::State *obstacleScratch_{nullptr};
-    ImprovedAStarParams ip_;
+    ObstacleCost obstacles_;
+    std::string heuristic_{"auto"};  ///< `heuristic`: auto, arc, euclidean, octile
+    bool points_{false};             ///< `contour` = points (else fcl)
+    bool smooth_{true};              ///< `smooth`
     int need_[2]{0, 0};
     int runStates_{1};      ///< K: values of the straight-run counter (0 .. K-1)
     double arcFactor_{1.0}; ///< phi_max / sin(phi_max)
-    int hKind_{0};          ///< 0 arc, 1 euclidean, 2 octile (resolved from ip_.heuristic and mode)
-    /// Lattice key of a state, ((cell * 8 + heading) * K + run), and back.
+    int hKind_{0};          ///< 0 arc, 1 euclidean, 2 octile (resolved from heuristic_ and mode)
+    /// Lattice key of a state, ((cell * 8 + heading) * K + run), and back; search states are
+    /// compact ids handed out in order of discovery (the lattice of a 0.05 m map exceeds 2^32 keys).
     struct Key
     {
         std::uint64_t width, runs;
@@ -177,8 +213,6 @@ private:
         }
     };
     Key keyCodec() const;
-    /// Lattice key ((cell * 8 + heading) * K + run) of a state; search states are compact ids
-    /// handed out in order of discovery (the lattice of a 0.05 m map exceeds 2^32 keys).
     SmoothingResult lastSmoothing_;
     std::vector<Pose2> latticePath_;
 };

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gridcar
@@ -43,6 +44,14 @@ std::vector<std::string> plannerNames();
 /// True if makePlanner() knows @p name (with or without "+smooth" / "+simplify").
 bool isPlannerName(const std::string &name);
 
+/// The old command lines as aliases of the registry's names: `corner-astar` with `lattice=grid`
+/// or `mode=paper` is `corner-astar-grid`, `improved-astar` with `lattice=grid` is
+/// `improved-astar-grid`; `lattice=car` and corner-astar's `mode=drivable` name the car
+/// lattice, which `corner-astar` and `improved-astar` search. Returns the name to make (a
+/// "+smooth" / "+simplify" suffix kept) and removes those switches from @p params; any other
+/// name and parameters are returned as they are. std::invalid_argument for `lattice=car` on a
+/// `-grid` name.
+std::string resolvePlannerAlias(const std::string &name, std::vector<std::pair<std::string, std::string>> &params);
 /// A new planner by name; "NAME+smooth" wraps planner NAME in a SmoothedPlanner (paper I's
 /// post-processing), "NAME+simplify" in one that runs OMPL's PathSimplifier. Throws
 /// std::invalid_argument listing the known names.
