@@ -6,7 +6,7 @@
 // once on OMPL's own DubinsStateSpace, once on gridcar::DubinsSpace. Output: Markdown on
 // stdout, progress on stderr. See docs/reliability.md and docs/performance.md.
 #include "gridcar/curves/CarCurves.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/spaces/CarSpaces.h"
 #include "gridcar/spaces/CurveSpaces.h"
 #include "gridcar/spaces/OmplAdapters.h"

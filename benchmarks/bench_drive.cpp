@@ -6,7 +6,7 @@
 // kinematic simulation: without moving obstacles, and with a pedestrian crossing the path at its
 // middle when the vehicle gets there. Output: Markdown tables on stdout (and every run that does
 // not arrive, with the follower's reason), progress on stderr. See docs/simulation.md.
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/bench/RandomPairs.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"

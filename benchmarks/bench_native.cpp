@@ -7,7 +7,7 @@
 // Output: Markdown tables on stdout, progress on stderr. See docs/performance.md.
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/bench/RandomPairs.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"

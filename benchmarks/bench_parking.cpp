@@ -8,7 +8,7 @@
 // the goal pose reached; then driven by the simulation. Output: Markdown tables on stdout,
 // progress on stderr, optional pictures (--png-dir). See docs/performance.md.
 #include "gridcar/bench/Figure.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/map/ParkingScenes.h"
 #include "gridcar/sim/Simulation.h"

@@ -6,7 +6,7 @@
 // another thread. Output: a Markdown table on stdout, progress on stderr. See
 // docs/reliability.md.
 #include "gridcar/map/MapIO.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 
 #include <CLI/CLI.hpp>

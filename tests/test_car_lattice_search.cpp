@@ -10,7 +10,7 @@
 #include "gridcar/path/Drivability.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/planners/ImprovedAStar.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/search/CarLatticeSearch.h"
 #include "gridcar/spaces/Goals.h"
 #include "gridcar/spaces/OmplAdapters.h"

@@ -11,7 +11,7 @@
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/planners/CarLatticePlanner.h"
 #include "gridcar/planners/ImprovedAStar.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/search/CarLatticeSearch.h"
 #include "gridcar/spaces/Goals.h"
 #include "gridcar/spaces/OmplAdapters.h"

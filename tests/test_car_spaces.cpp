@@ -4,7 +4,7 @@
 #include "gridcar/core/Cusps.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/path/PathMetrics.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/spaces/CarSpaces.h"
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"

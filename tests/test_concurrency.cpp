@@ -5,7 +5,7 @@
 // - a planner's progress properties read from another thread while it solves (what
 //   ompl::tools::Benchmark's progress thread does), and a whole Benchmark run with progress
 //   sampling on, for our planners beside OMPL's.
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"

@@ -3,7 +3,7 @@
 #include "PlannerTestUtil.h"
 
 #include "gridcar/path/PathMetrics.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/core/Angles.h"
 #include "gridcar/curves/ClothoidTurns.h"
 #include "gridcar/path/ContinuousCurvature.h"

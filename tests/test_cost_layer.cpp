@@ -1,7 +1,7 @@
 // The map's cost layer: read from map_server scale / raw maps (and Nav2 costmap values),
 // carried by crops and resampling, and used by the car-lattice planners when asked
 // (`cost_layer_weight`): a costly strip is driven round, not through.
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/core/Errors.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/spaces/Setup.h"

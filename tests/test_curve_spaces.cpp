@@ -4,7 +4,7 @@
 // aborted in OMPL 1.5.2's assertions about one run in a hundred) run 200 times without abort,
 // every exact path drivable by the independent check.
 #include "gridcar/path/Drivability.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/spaces/CurveSpaces.h"
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"

@@ -1,7 +1,7 @@
 // The query pipeline (planners/PlanQuery): configurePlanner, progress properties, runQuery.
 #include "gridcar/core/Errors.h"
 #include "gridcar/planners/CornerAStar.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/SmoothedPlanner.h"
 
 #include "PlannerTestUtil.h"

@@ -3,7 +3,7 @@
 // set on the same SpaceInformation is noticed by the next solve(), with or without setup(), and
 // the old map may then be freed (run under AddressSanitizer in the test command).
 #include "gridcar/path/Drivability.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/spaces/Setup.h"

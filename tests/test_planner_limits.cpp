@@ -4,7 +4,7 @@
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/planners/GridPlanner.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/Setup.h"
 #include "PlannerTestUtil.h"

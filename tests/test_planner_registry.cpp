@@ -2,7 +2,7 @@
 // under names of their own, the old switches as aliases, a parameter that does not act in the
 // planner as configured refused with the reason, and a parameter acting the same whether it is
 // set before or after setup().
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/core/Errors.h"
 #include "gridcar/planners/CarLatticePlanner.h"
 #include "gridcar/planners/CarLatticeParams.h"

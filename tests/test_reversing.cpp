@@ -2,7 +2,7 @@
 // `cusp_penalty`, forward-only on a Dubins space, paths that back out drivably.
 #include "PlannerTestUtil.h"
 
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/map/ParkingScenes.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/sim/Simulation.h"

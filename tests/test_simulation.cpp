@@ -3,7 +3,7 @@
 #include "gridcar/core/Angles.h"
 #include "gridcar/core/Errors.h"
 #include "gridcar/spaces/Setup.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "TestData.h"

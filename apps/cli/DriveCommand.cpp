@@ -3,7 +3,7 @@
 #include "Cli.h"
 
 #include "gridcar/bench/Figure.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/path/PathIO.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"

@@ -5,7 +5,7 @@
 #include "gridcar/bench/ParamsFile.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/PlannerReport.h"
 #include "gridcar/planners/PlannerFactory.h"
 

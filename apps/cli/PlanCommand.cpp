@@ -2,7 +2,7 @@
 #include "Cli.h"
 
 #include "gridcar/bench/Figure.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/path/PathIO.h"
 
 #include <ompl/util/Console.h>

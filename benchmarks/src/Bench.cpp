@@ -10,7 +10,7 @@
 #include "gridcar/objectives/Objectives.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/path/PathMetrics.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/render/Render.h"
 #include "gridcar/sim/Simulation.h"

@@ -1,7 +1,7 @@
 #include "gridcar/bench/MovingAi.h"
 
 #include "gridcar/core/Errors.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 
 #include <algorithm>
 #include <chrono>

@@ -6,7 +6,7 @@
 #include "gridcar/core/Errors.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/render/Render.h"
 
 #include <ompl/util/Console.h>

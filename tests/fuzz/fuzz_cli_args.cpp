@@ -3,7 +3,7 @@
 #include "FuzzUtil.h"
 
 #include "../../apps/cli/Cli.h"
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 
 #include <sstream>
 

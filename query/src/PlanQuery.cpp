@@ -1,4 +1,4 @@
-#include "gridcar/bench/PlanQuery.h"
+#include "gridcar/query/PlanQuery.h"
 
 #include "gridcar/core/Cusps.h"
 
