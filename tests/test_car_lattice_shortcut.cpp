@@ -1,4 +1,4 @@
-// CarLatticeSearch::shortcut(): a found path shortened by the analytic expansion's curves,
+// PathShortcut::apply(): a found path shortened by the analytic expansion's curves,
 // with its guarantees kept (ends, drivability, cusps, the curvature rate with clothoid turns),
 // stopped at once, on paper C's parallel park, and the `shortcut` parameter.
 #include "PlannerTestUtil.h"
@@ -12,7 +12,7 @@
 #include "gridcar/planners/CarLatticePlanner.h"
 #include "gridcar/planners/ImprovedAStar.h"
 #include "gridcar/query/PlanQuery.h"
-#include "gridcar/planners/search/CarLatticeSearch.h"
+#include "gridcar/planners/search/PathShortcut.h"
 #include "gridcar/spaces/Goals.h"
 #include "gridcar/spaces/OmplAdapters.h"
 
@@ -29,7 +29,7 @@ using test::randomBlocks;
 using test::randomFree;
 namespace ob = ompl::base;
 
-// CarLatticeSearch::shortcut() on searched paths, forwards only and reversing, on seeded random
+// PathShortcut::apply() on searched paths, forwards only and reversing, on seeded random
 // maps: the ends stay to the last bit, the path never gets longer or costlier or gains a cusp,
 // and it stays drivable by the independent check (exact FCL every 2 cm, K_max, split at cusps);
 // and it does shorten some of them (else it does nothing).
@@ -59,7 +59,7 @@ TEST(CarLatticeSearch, ShortcutKeepsEndsAndGuaranteesAndShortens)
                 ++paths;
                 std::vector<Pose2> p = r.path;
                 const int cuspsBefore = int(splitAtCusps(p).size()) - 1;
-                const ShortcutReport rep = search.shortcut(p, q, cost, [] { return false; }, 3000);
+                const ShortcutReport rep = PathShortcut(search).apply(p, q, cost, [] { return false; }, 3000);
                 SCOPED_TRACE("seed " + std::to_string(seed) + (reverse ? " reversing" : " forwards") + " query " +
                              std::to_string(k));
                 EXPECT_EQ(p.front().x, r.path.front().x);
@@ -117,7 +117,7 @@ TEST(CarLatticeSearch, ShortcutWithClothoidTurnsKeepsTheCurvatureRate)
             if (!before.drivable) continue;  // the rate is the shortcut's to keep, not to mend
             ++paths;
             std::vector<Pose2> p = r.path;
-            const ShortcutReport rep = search.shortcut(p, q, cost, [] { return false; }, 3000);
+            const ShortcutReport rep = PathShortcut(search).apply(p, q, cost, [] { return false; }, 3000);
             const Drivability after = checkDrivable(p, fc, o);
             EXPECT_TRUE(after.drivable) << after.reason;
             EXPECT_LE(after.maxCurvatureRate, 1.02 * cfg.curvatureRate);
@@ -153,7 +153,7 @@ TEST(CarLatticeSearch, ShortcutStoppedAtOnceKeepsThePath)
         if (!r.exact) continue;
         ++tried;
         std::vector<Pose2> p = r.path;
-        const ShortcutReport rep = search.shortcut(p, q, cost, [] { return true; }, 3000);
+        const ShortcutReport rep = PathShortcut(search).apply(p, q, cost, [] { return true; }, 3000);
         EXPECT_EQ(rep.replaced, 0);
         ASSERT_EQ(p.size(), r.path.size());
         for (std::size_t i = 0; i < p.size(); ++i) EXPECT_EQ(p[i].x, r.path[i].x);

@@ -96,10 +96,10 @@ double referenceIntegralCost(const GridSetup &s, int sc, int sr, int gc, int gr,
 TEST(ImprovedAStar, PaperEvaluationByHand)
 {
     // eq. 4-5: f = g' + h (1 + o), g' = g while g < o, else 0
-    EXPECT_DOUBLE_EQ(ImprovedAStar::paperPriority(0.5, 10.0, 0.8), 0.5 + 10.0 * 1.8);
-    EXPECT_DOUBLE_EQ(ImprovedAStar::paperPriority(0.8, 10.0, 0.8), 18.0);  // g >= o: g' = 0
-    EXPECT_DOUBLE_EQ(ImprovedAStar::paperPriority(25.0, 4.0, 0.5), 6.0);
-    EXPECT_DOUBLE_EQ(ImprovedAStar::paperPriority(0.0, 0.0, 0.0), 0.0);
+    EXPECT_DOUBLE_EQ(paperPriority(0.5, 10.0, 0.8), 0.5 + 10.0 * 1.8);
+    EXPECT_DOUBLE_EQ(paperPriority(0.8, 10.0, 0.8), 18.0);  // g >= o: g' = 0
+    EXPECT_DOUBLE_EQ(paperPriority(25.0, 4.0, 0.5), 6.0);
+    EXPECT_DOUBLE_EQ(paperPriority(0.0, 0.0, 0.0), 0.0);
 }
 
 TEST(ImprovedAStar, HeuristicsObstacleCostAndLattice)

@@ -17,7 +17,7 @@ namespace gridcar
 {
 namespace
 {
-/// Curves the path shortcut may try per query (CarLatticeSearch::shortcut()).
+/// Curves the path shortcut may try per query (PathShortcut::apply()).
 constexpr int kShortcutCurves = 3000;
 }  // namespace
 
@@ -62,15 +62,11 @@ FamilyRun CarLatticePlanner::searchFamily(const ompl::base::State *start, const 
     terms.freeStartHeading = freeStartHeading();
     terms.cuspPenalty = cuspPenalty() * cost->costPerMetreOfPenalty();
     terms.curveWithin = curveWithin();
-    if (settings_.costLayerWeight > 0)
-    {
-        if (checker_ && checker_->grid().hasCosts())
-            terms.layer = &checker_->grid();
-        else
-            OMPL_WARN("%s: cost_layer_weight is set but the map has no cost layer (a map_server map in scale or "
-                      "raw mode, on gridcar's validity checker): it has no effect",
-                      getName().c_str());
-    }
+    terms.map = checker_;
+    if (settings_.costLayerWeight > 0 && !terms.layered())
+        OMPL_WARN("%s: cost_layer_weight is set but the map has no cost layer (a map_server map in scale or "
+                  "raw mode, on gridcar's validity checker): it has no effect",
+                  getName().c_str());
     const CarPostProcessing post{shortcutting() ? kShortcutCurves : 0, curvatureRate(), 1.0 / turningRadius()};
     return car_.solve(si_, start, std::move(terms), post, goal, *cost, cancelled, progress);
 }

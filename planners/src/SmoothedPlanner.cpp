@@ -1,6 +1,5 @@
 #include "gridcar/planners/SmoothedPlanner.h"
 
-#include "gridcar/planners/GridPlanner.h"
 #include "gridcar/path/Drivability.h"
 
 #include "gridcar/spaces/OmplAdapters.h"

@@ -1,6 +1,6 @@
 /// @file CarLatticeExpand.cpp
-/// @brief CarLatticeSearch::run(): the expander the search core drives, the Dubins shot to the
-/// goal and the path out of the search tree.
+/// @brief CarLatticeSearch::run(): the expander the search core drives (its goal questions
+/// answered by CarGoal, its shot by AnalyticExpansion) and the path out of the search tree.
 #include "gridcar/planners/search/CarLatticeSearch.h"
 
 #include "gridcar/core/Angles.h"
@@ -32,35 +32,36 @@ struct CarExpander
     std::vector<std::vector<double>> shapeCost;
 
     Pose2 poseOf(std::uint32_t s) const { return S.statePose(s); }
+    const CarGoal goal;   ///< the goal manager: the search's questions about the goal
     CarHeuristic bounds;  ///< the lower bounds (search/CarHeuristics.h); all zero when not aiming
     CurveTableBound table;  ///< the curve bound read from the lattice's CurveTable (inactive: not asked for)
 
-    CarExpander(CarLatticeSearch &search, const LatticeCostModel &c) : S(search), cost(c)
+    CarExpander(CarLatticeSearch &search, const LatticeCostModel &c) : S(search), cost(c), goal(search.query_)
     {
-        bounds.euclidean = {S.query_.goal, cost.minCostPerMetre()};
+        bounds.euclidean = {goal.pose(), cost.minCostPerMetre()};
         // a hybrid state lies up to half a cell's diagonal from the node its 2D distance is read at
         const double slack = S.lattice_->hybrid() ? S.lattice_->cell() * M_SQRT1_2 : 0.0;
         // the 2D search's distances are metres unless it weighs its edges by the model: in
         // seconds under a driving-time cost they were read as metres, a bound V times too high
         bounds.obstacle = {S.ratio_, (S.seedRadius_ + slack) * cost.minCostPerMetre(),
                            cost.weighted() ? 1.0 : cost.minCostPerMetre()};
-        bounds.turn = {S.query_.goal, cost.minTurnCostPerRad()};
+        bounds.turn = {goal.pose(), cost.minTurnCostPerRad()};
         // a goal heading to match: the Reeds-Shepp / Dubins length to the goal pose, within
         // the query's distance of the goal
-        if (S.query_.goalYawTolerance == 0 && S.query_.shoot && S.query_.curveWithin > 0)
+        if (goal.exactHeading() && goal.shootable() && S.query_.curveWithin > 0)
         {
             const double R = S.lattice_->config().turnRadius;
             if (!S.query_.curveTable())
-                bounds.curve = {S.query_.goal, R, S.lattice_->config().reverse, cost.minCostPerMetre(), S.query_.curveWithin};
+                bounds.curve = {goal.pose(), R, S.lattice_->config().reverse, cost.minCostPerMetre(), S.query_.curveWithin};
             else if (const CurveTable *t = S.curveTable())
-                table = CurveTableBound(*t, S.latticePose(S.query_.goal));
+                table = CurveTableBound(*t, S.latticePose(goal.pose()));
         }
         bounds.useObstacle = S.use2d_;
         bounds.weight = S.query_.settings.heuristicWeight;
     }
     double hNode(int i, int j) const
     {
-        if (!S.query_.aim) return 0.0;
+        if (!goal.aimed()) return 0.0;
         return bounds.position(S.nodePose(i, j, 0), S.use2d_ ? S.h2d_->distance(i, j) : -1.0);
     }
     /// The heuristic at lattice-frame pose @p lat of node (i, j) at heading h (a node's pose, or
@@ -70,7 +71,7 @@ struct CarExpander
     /// ObstacleHeuristic::lowerBound() in place of its distance (the bounds grow with it).
     double hWith(const Pose2 &lat, int i, int j, int h, bool below) const
     {
-        if (!S.query_.aim) return 0.0;
+        if (!goal.aimed()) return 0.0;
         const Pose2 p = S.worldPose(lat);
         const double tb = table.active() ? cost.minCostPerMetre() * table(i, j, h) : 0.0;
         const double d2 = !S.use2d_ ? -1.0 : below ? S.h2d_->lowerBound(i, j) : S.h2d_->distance(i, j);
@@ -86,21 +87,15 @@ struct CarExpander
         if (keep) hKept[s] = h;
         return h;
     }
-    /// Nearest the goal, for the approximate answer: the squared distance to the position
-    /// aimed at, or without aim the goal's own distance.
-    double closeness(std::uint32_t s) const
-    {
-        const Pose2 p = poseOf(s);
-        if (!S.query_.aim) return S.query_.goalDistance ? S.query_.goalDistance(p) : 0.0;
-        return (p.x - S.query_.goal.x) * (p.x - S.query_.goal.x) + (p.y - S.query_.goal.y) * (p.y - S.query_.goal.y);
-    }
+    /// Nearest the goal, for the approximate answer (CarGoal::closeness()).
+    double closeness(std::uint32_t s) const { return goal.closeness(poseOf(s)); }
     bool isGoal(std::uint32_t s)
     {
         ++expansions;
-        return S.query_.inGoal && S.query_.inGoal(poseOf(s));
+        return goal.reached(poseOf(s));
     }
-    /// The analytic expansion step: a Dubins curve from the state to the exact goal pose.
-    bool analyticExpansion(std::uint32_t s) { return S.query_.shoot && S.query_.aim && S.tryShot(s, cost, expansions); }
+    /// The analytic expansion step: a curve from the state to the exact goal pose.
+    bool analyticExpansion(std::uint32_t s) { return goal.shootable() && S.tryShot(s, cost, expansions); }
     /// The cached stepCost() of primitive @p p of heading @p h (NaN until computed), or null
     /// where the cost model's stepCost() depends on more than the primitive's shape.
     double *shapeSlot(int h, std::size_t p)
@@ -149,7 +144,7 @@ struct CarExpander
         const bool hybrid = S.lattice_->hybrid();
         const double c = S.lattice_->cell(), ca = std::cos(at.yaw), sa = std::sin(at.yaw);
         const double gs = S.space_.g(s);
-        const bool layered = S.query_.layered();
+        const bool mapped = S.query_.mapCosts();
         for (std::size_t p = 0; p < prims.size(); ++p)
         {
             const LatticePrimitive &prim = prims[p];
@@ -177,7 +172,7 @@ struct CarExpander
             // checked. A cost that needs the motion's samples is computed only for a free motion
             // that its lower bound (least cost per metre, no cost layer) lets improve.
             double *cached = shapeSlot(hybrid ? 0 : k.h, p);
-            const bool sampled = layered || !cached || std::isnan(*cached);
+            const bool sampled = mapped || !cached || std::isnan(*cached);
             const std::uint32_t seen = S.known(ni, nj, nh);
             const double gSeen = seen != StateInterner::kNone ? S.space_.g(seen) : kInf;
             if (seen != StateInterner::kNone && S.space_.closed(seen)) continue;
@@ -192,7 +187,7 @@ struct CarExpander
                 S.worldSamples(at, prim, samples);
                 if (cached && std::isnan(*cached)) *cached = cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
                 double base = cached ? *cached : cost.stepCost(from, samples, prim.length, std::abs(prim.turn));
-                if (layered) base += S.query_.layerCost(samples, prim.length) * cost.costPerMetreOfPenalty();
+                if (mapped) base += S.query_.mapCost(samples, prim.length) * cost.costPerMetreOfPenalty();
                 step = stepOf(base);
                 if (!(gs + step < gSeen)) continue;
             }
@@ -313,7 +308,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         if (q.freeStartHeading ? col_->poseFree(nodePose(0, 0, h)) : h == 0) starts.push_back(intern(0, 0, h));
     // motions checked when used (lazyAstar()) where that changes nothing but the work: on a
     // node lattice (a state's pose is its node's) with costs known before the check
-    const bool lazy = q.lazyChecks && !cost.customPriority() && !lattice_->hybrid() && cost.shapeOnly() && !q.layered();
+    const bool lazy = q.lazyChecks && !cost.customPriority() && !lattice_->hybrid() && cost.shapeOnly() && !q.mapCosts();
     SearchResult res;
     if (cost.customPriority())
     {

@@ -2,8 +2,6 @@
 
 #include "gridcar/core/Angles.h"
 
-#include "gridcar/curves/CarCurves.h"
-#include "gridcar/planners/search/detail/CurveSampling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,38 +26,7 @@ CarLatticeSearch::CarLatticeSearch(std::shared_ptr<CarCollision> collision, std:
 {
     fc_ = dynamic_cast<const FootprintCollision *>(col_.get());
     ratio_ = measureRatio();
-    const CarLatticeConfig &cfg = lattice_->config();
-    if (cfg.curvatureRate > 0 && !cfg.reverse) clothoid_ = std::make_unique<ClothoidTurn>(cfg.turnRadius, cfg.curvatureRate);
-}
-
-bool CarLatticeSearch::clothoidShot(const Pose2 &from, const Pose2 &to, std::vector<Pose2> &poses, double &length,
-                                    double &turn) const
-{
-    const double K = 1.0 / clothoid_->radius();
-    for (const ClothoidCurve &c : clothoidCurves(from, to, *clothoid_, 2))
-    {
-        // each part sampled on its own, no body point moving more than the lattice's spacing
-        std::vector<double> arc;
-        double at = 0;
-        for (const double l : {clothoid_->length(c.delta1), c.straight, clothoid_->length(c.delta2)})
-        {
-            if (l < 1e-6)  // (a deflection of 1e-13 rad is a turn of 1e-7 m: no pose of its own)
-            {
-                at += l;
-                continue;
-            }
-            detail::appendArcs(l, l * (1.0 + col_->reach() * K), lattice_->config().spacing, at, arc);
-        }
-        if (arc.empty()) continue;
-        const auto poseAt = [&](int i) { return clothoidCurvePose(c, *clothoid_, arc[std::size_t(i - 1)]); };
-        if (!shotFree(from, int(arc.size()), poseAt)) continue;
-        poses.clear();
-        for (int i = 1; i <= int(arc.size()); ++i) poses.push_back(poseAt(i));
-        length = c.length;
-        turn = c.turning();
-        return true;
-    }
-    return false;
+    analytic_ = std::make_unique<AnalyticExpansion>(*col_, *lattice_);
 }
 
 CarLatticeSearch::~CarLatticeSearch() = default;
@@ -191,21 +158,6 @@ bool CarLatticeSearch::curveFree(const Pose2 &from, int n, const std::function<P
     return col_->curveFree(from, n, poseAt, lattice_->margin() + extra);
 }
 
-bool CarLatticeSearch::shotFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const
-{
-    // blocks of 64 poses, the run's termination condition polled between them
-    constexpr int kBlock = 64;
-    Pose2 blockStart = from;
-    for (int b = 0; b < n; b += kBlock)
-    {
-        if (b > 0 && cancelled_ && (*cancelled_)()) return false;
-        const int m = std::min(kBlock, n - b);
-        if (!col_->curveFree(blockStart, m, [&](int i) { return poseAt(b + i); }, lattice_->margin())) return false;
-        blockStart = poseAt(b + m);
-    }
-    return true;
-}
-
 bool CarLatticeSearch::fitsAtNode(int i, int j) const
 {
     // a relaxation with gridcar's checker, so that the heuristic stays a lower bound: false
@@ -258,135 +210,20 @@ void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
     nj_ = int(std::ceil(hi[1] / c)) + 2 - j0_;
 }
 
-namespace
-{
-/// With a cost layer the analytic expansion ends the search at once, so it must not cross
-/// ground costlier than the query's start or goal: the search then goes round a costly band,
-/// not through it (measured from the query's start, not the shot's, or a node just inside
-/// the band would shoot through the rest). True when @p poses' mean cost exceeds that + 8.
-bool crossesCostlierGround(const CarLatticeQuery &q, const std::vector<Pose2> &poses)
-{
-    if (!q.layered() || poses.empty()) return false;
-    const auto costAt = [&q](const Pose2 &p) {
-        const Cell c = q.layer->worldToCell(p.x, p.y);
-        return double(q.layer->cost(c.col, c.row));
-    };
-    double mean = 0;
-    for (const Pose2 &p : poses) mean += costAt(p);
-    return mean / double(poses.size()) > std::max(costAt(q.start), costAt(q.goal)) + 8.0;
-}
-}  // namespace
-
-
 bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)
 {
-    const auto k = unpack(states_.key(s));
     const Pose2 from = statePose(s);
-    const Pose2 &g = query_.goal;
-    const double e = std::hypot(g.x - from.x, g.y - from.y);
-    const double R = lattice_->config().turnRadius, c = lattice_->cell();
-    if (e > 30 * R + 10 * c) return false;
-    const bool near = e <= 2 * R + 2 * c;
-    if (!near)
-    {
-        if (expansions % 8 != 0) return false;
-        // where the obstacle-aware distance is well above the straight line, something is in
-        // the way: a Dubins curve (nearly straight this far out) would hit it
-        const double d = use2d_ ? h2d_->distance(k.i, k.j) : -1.0;
-        if (d > 1.1 * e + R) return false;
-    }
-    std::vector<double> yaws;
-    if (query_.goalYawTolerance < 0)
-    {
-        yaws.push_back(std::atan2(g.y - from.y, g.x - from.x));
-        for (int h = 0; h < lattice_->neighbourCount(); ++h) yaws.push_back(wrapYaw(phi_ + lattice_->stepYaw(h)));
-    }
-    else
-    {
-        yaws.push_back(g.yaw);
-        if (query_.goalYawTolerance > 0)
-            for (double d : {-query_.goalYawTolerance, query_.goalYawTolerance}) yaws.push_back(wrapYaw(g.yaw + d));
-    }
-    // gridcar's Dubins / Reeds-Shepp curves (OMPL 1.5.2's asserts on rounding errors and would
-    // abort); near the goal the few shortest words per end yaw, since in a tight spot the
-    // shortest one is often blocked where a slightly longer one is free
-    const bool rs = lattice_->config().reverse;
-    const int words = near ? (rs ? 4 : 2) : 1;
-    std::vector<std::pair<double, double>> cand;  // (length, index)
-    std::vector<CarCurve> curves;
-    std::vector<double> curveYaw;
-    for (double y : yaws)
-    {
-        // the curve family of the primitive set's directions: Reeds-Shepp when it reverses
-        const Pose2 to{g.x, g.y, y};
-        for (const CarCurve &c : rs ? reedsSheppCurves(from, to, R, words) : dubinsCurves(from, to, R, words))
-            if (c.length <= e + 2 * M_PI * R)
-            {
-                cand.push_back({c.length, double(curves.size())});
-                curves.push_back(c);
-                curveYaw.push_back(y);
-            }
-    }
-    std::sort(cand.begin(), cand.end());
-    const std::size_t tries = near ? (rs ? 6u : 3u) : 1u;
-    if (cand.size() > tries) cand.resize(tries);
-    std::vector<double> arc;  // arc length of each sampled pose along the curve
-    for (const auto &candidate : cand)
-    {
-        const double len = candidate.first;  // a plain variable: lambdas may capture it (C++17)
-        const double index = candidate.second;
-        ++shotsTried_;
-        const CarCurve &path = curves[std::size_t(index)];
-        const double y = curveYaw[std::size_t(index)];
-        detail::sampleArcs(path, col_->reach(), lattice_->config().spacing, arc);
-        const int n = int(arc.size());
-        auto poseAt = [&](int i) {
-            Pose2 p = curvePose(from, path, std::min(arc[std::size_t(i - 1)], len));
-            p.yaw = wrapYaw(p.yaw);
-            return p;
-        };
-        if (cancelled_ && (*cancelled_)()) return false;  // the loop then stops at its next poll
-        const bool free = shotFree(from, n, poseAt);
-        if (!free) continue;
-        double turn = 0, forward = 0, backward = 0;
-        for (int seg = 0; seg < path.count; ++seg)
-        {
-            const CurveSegment &sg = path.segments[std::size_t(seg)];
-            if (sg.steer != Steer::Straight) turn += std::abs(sg.length) / R;
-            (sg.length < 0 ? backward : forward) += std::abs(sg.length);
-        }
-        // gear changes: the curve's cusps, and one before it when it sets off in the other gear
-        int gearChanges = path.cusps();
-        for (int seg = 0; seg < path.count; ++seg)
-            if (path.segments[std::size_t(seg)].length != 0)
-            {
-                const int first = path.segments[std::size_t(seg)].length < 0 ? -1 : 1;
-                if (gear_[s] != 0 && gear_[s] != first) ++gearChanges;
-                break;
-            }
-        std::vector<Pose2> poses;
-        if (clothoid_)
-        {
-            // the Dubins curve's arcs break the curvature rate: its clothoid counterpart (the
-            // free Dubins curve only tells where one is worth computing)
-            if (!clothoidShot(from, {g.x, g.y, y}, poses, forward, turn)) continue;
-        }
-        else
-        {
-            poses.reserve(std::size_t(n));
-            for (int i = 1; i <= n; ++i) poses.push_back(poseAt(i));
-        }
-        poses.back() = {g.x, g.y, y};
-        if (crossesCostlierGround(query_, poses)) continue;
-        shot_ = std::move(poses);
-        shotFrom_ = s;
-        if (query_.timeReversed) std::swap(forward, backward);  // driven in the other gear
-        shotCost_ = cost.stepCost(from, shot_, forward + query_.settings.reversePenalty * backward, turn) +
-                    gearChanges * query_.cuspPenalty +
-                    query_.layerCost(shot_, forward + backward) * cost.costPerMetreOfPenalty();
-        return true;
-    }
-    return false;
+    const AnalyticExpansion::Range range = analytic_->due(from, query_.goal, expansions, [&] {
+        const auto k = unpack(states_.key(s));
+        return use2d_ ? h2d_->distance(k.i, k.j) : -1.0;
+    });
+    if (range == AnalyticExpansion::Range::Out) return false;
+    AnalyticShot shot;
+    if (!analytic_->shoot(from, gear_[s], query_, phi_, range, cost, cancelled_, shot, shotsTried_)) return false;
+    shot_ = std::move(shot.poses);
+    shotFrom_ = s;
+    shotCost_ = shot.cost;
+    return true;
 }
 
 }  // namespace gridcar

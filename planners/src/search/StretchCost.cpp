@@ -37,7 +37,7 @@ double stretchCost(const std::vector<Pose2> &poses, int before, int after, const
         if (b <= a) return;
         samples.assign(poses.begin() + std::ptrdiff_t(a) + 1, poses.begin() + std::ptrdiff_t(b) + 1);
         double step = cost.stepCost(poses[a], samples, len, std::abs(turn)) +
-                      q.layerCost(samples, len) * cost.costPerMetreOfPenalty();
+                      q.mapCost(samples, len) * cost.costPerMetreOfPenalty();
         if (runGear < 0) step *= q.settings.reversePenalty;
         total += step;
     };

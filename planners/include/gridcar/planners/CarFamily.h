@@ -3,10 +3,10 @@
 /// @brief The car-lattice search family: a CarLatticeSearch over a primitive set
 /// (CarLatticeConfig) and the collision model, with a cost model per query.
 
+#include "gridcar/planners/FallbackSchedule.h"
 #include "gridcar/planners/GoalAdapter.h"
 #include "gridcar/planners/GridFamily.h"
 #include "gridcar/planners/SolverSupport.h"
-#include "gridcar/path/ContinuousCurvature.h"
 #include "gridcar/planners/search/CarLatticeSearch.h"
 
 #include <ompl/base/PlannerData.h>
@@ -20,10 +20,10 @@ namespace gridcar
 /// What is done to a path the car lattice found (after the search, before it is returned).
 struct CarPostProcessing
 {
-    /// Curves CarLatticeSearch::shortcut() may try on a found path (0: no shortcut)
+    /// Curves PathShortcut::apply() may try on a found path (0: no shortcut)
     int shortcutCurves{0};
-    /// Continuous curvature: a found path's curvature jumps replaced (smoothCurvature()) so
-    /// that curvature changes no faster than this (1/m^2; 0: the path as searched)
+    /// Continuous curvature (CurvatureStep): a found path's curvature jumps replaced so that
+    /// curvature changes no faster than this (1/m^2; 0: the path as searched)
     double curvatureRate{0.0};
     double maxCurvature{0.0};  ///< K_max (1/m) the replacements keep
 };
@@ -42,7 +42,7 @@ public:
     /// (Re)builds the search when @p cfg or @p collision differ from the last set-up; with
     /// @p fallback, further searches on that primitive set (the hybrid one) and on it at half
     /// its cell, that a query runs when the first ends without reaching the goal and time is
-    /// left (solve() says in which order).
+    /// left (in the order and on the budgets of FallbackSchedule).
     /// With @p forPoses, a query whose goal heading is to be met starts on that primitive
     /// set instead of @p cfg (`turns=auto`: arcs for a manoeuvre, clothoid turns for a route).
     void setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision,
@@ -60,7 +60,8 @@ public:
 
 
 private:
-    void smooth(const CarPostProcessing &post, std::vector<Pose2> &path, const std::function<bool()> &cancelled);
+    /// The search a stage of the fallback schedule runs (the half-cell one built on first use).
+    CarLatticeSearch *stageSearch(FallbackSearch which, CarLatticeSearch *main);
     std::shared_ptr<CarCollision> collision_;
     /// the lattice; the hybrid fallback; the hybrid at half its cell, where both ran out; the
     /// lattice for a goal heading to meet (null: search_)

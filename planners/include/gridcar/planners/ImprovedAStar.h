@@ -123,8 +123,6 @@ public:
     explicit ImprovedAStar(const ompl::base::SpaceInformationPtr &si);
     void setup() override;
     const ImprovedSettings &improvedSettings() const { return obstacles_.settings; }
-    /// Paper I's evaluation (kept as the class's name for it; see gridcar::paperPriority()).
-    static double paperPriority(double g, double h, double o) { return gridcar::paperPriority(g, h, o); }
     /// o(n) at a world pose (after setup()).
     double obstacleCostAtPose(const Pose2 &p) const { return obstacles_.atPose(p); }
     /// Its car-lattice paths are final (drivable as searched): it needs no smoothing wrapper.

@@ -6,13 +6,16 @@
 
 #include "gridcar/core/Angles.h"
 #include "gridcar/planners/search/AStar.h"
+#include "gridcar/planners/search/AnalyticExpansion.h"
 #include "gridcar/planners/search/CarCollision.h"
+#include "gridcar/planners/search/CarGoal.h"
 #include "gridcar/planners/search/CarLattice.h"
 #include "gridcar/planners/search/CarLatticeSettings.h"
 #include "gridcar/planners/search/CurveTable.h"
 #include "gridcar/planners/search/ObstacleHeuristic.h"
 #include "gridcar/planners/search/detail/StateInterner.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -62,23 +65,12 @@ public:
     bool shapeOnly() const override { return true; }
 };
 
-/// One query on the car lattice, in world terms.
-struct CarLatticeQuery
+/// One query on the car lattice, in world terms: its goal (the CarGoalTerms base, which the
+/// search reads through its goal manager CarGoal), its start and its settings.
+struct CarLatticeQuery : CarGoalTerms
 {
     Pose2 start;
     bool freeStartHeading{false};  ///< start at any lattice heading where the car fits
-    /// The goal position the heuristic aims at and the Dubins shot reaches exactly (when shoot).
-    Pose2 goal;
-    bool shoot{true};
-    double goalYawTolerance{-1.0};  ///< rad: < 0 any heading, 0 exactly goal.yaw, > 0 within it
-    /// Goal test of a lattice node (empty: only the shot reaches the goal).
-    std::function<bool(const Pose2 &)> inGoal;
-    /// False when `goal` is no target at all (a goal region that cannot be sampled): no
-    /// heuristic then (Dijkstra order), and no shot.
-    bool aim{true};
-    /// Without aim: the goal's own distance from a pose, so that an approximate answer ends at
-    /// the explored state nearest the goal (empty: at the start).
-    std::function<double(const Pose2 &)> goalDistance;
     /// The settings the search reads as they are: `heuristicWeight` w >= 1 (weighted A*: the
     /// path found costs at most w x the lattice optimum when the heuristic is a lower bound;
     /// larger w, fewer expansions), `reversePenalty` (>= 1, on the cost of a primitive driven
@@ -109,23 +101,41 @@ struct CarLatticeQuery
     /// generated, where that changes nothing but the work (a node lattice, costs known
     /// before the check: the same states closed with the same costs, ties apart).
     bool lazyChecks{true};
-    /// The map's cost layer (OccupancyGrid::cost(), 0..252), weighed by settings.costLayerWeight:
-    /// a motion costs weight x (mean cost of its poses / 252) x its length more, in metres
-    /// converted by the cost model (costPerMetreOfPenalty()). Null or 0: the layer is not used.
-    const OccupancyGrid *layer{nullptr};
-    /// True if the cost layer weighs on the motions.
-    bool layered() const { return layer && settings.costLayerWeight > 0; }
-    /// The extra cost of a motion over @p poses of @p length metres (0 without a layer).
-    double layerCost(const std::vector<Pose2> &poses, double length) const
+    /// The map the search runs on, for the costs read off it (null: none, as on an OMPL
+    /// application's own validity checker): its cost layer and its distance field.
+    const FootprintChecker *map{nullptr};
+    /// True if the map's cost layer weighs on the motions: the map has one (OccupancyGrid::
+    /// cost(), 0..252) and settings.costLayerWeight > 0.
+    bool layered() const { return map && settings.costLayerWeight > 0 && map->grid().hasCosts(); }
+    /// True if a motion's cost depends on where it is on the map (mapCost() is not 0).
+    bool mapCosts() const { return layered(); }
+    /// The map's cost layer value at @p p (0..252).
+    double layerAt(const Pose2 &p) const
     {
-        if (!layered() || poses.empty()) return 0.0;
-        double sum = 0;
-        for (const Pose2 &p : poses)
-        {
-            const Cell c = layer->worldToCell(p.x, p.y);
-            sum += layer->cost(c.col, c.row);
-        }
-        return settings.costLayerWeight * sum / (252.0 * double(poses.size())) * length;
+        const Cell cell = map->grid().worldToCell(p.x, p.y);
+        return map->grid().cost(cell.col, cell.row);
+    }
+    /// The extra cost (m) of a motion over @p poses of @p length metres read off the map (the
+    /// callers convert it by the cost model's costPerMetreOfPenalty()): with a cost layer,
+    /// weight x (mean cost of its poses / 252) x its length.
+    double mapCost(const std::vector<Pose2> &poses, double length) const
+    {
+        if (!mapCosts() || poses.empty()) return 0.0;
+        double layerSum = 0;
+        for (const Pose2 &p : poses) layerSum += layerAt(p);
+        return settings.costLayerWeight * layerSum / (252.0 * double(poses.size())) * length;
+    }
+    /// The analytic expansion ends the search at once, so with map costs its curve must not
+    /// cross costlier ground than the query's start and goal: the search then goes round a
+    /// costly band, not through it (measured from the query's start, not the curve's, or a
+    /// node just inside the band would shoot through the rest). True when @p poses' mean
+    /// cost-layer value exceeds that of both ends + 8.
+    bool crossesCostlierGround(const std::vector<Pose2> &poses) const
+    {
+        if (!layered() || poses.empty()) return false;
+        double mean = 0;
+        for (const Pose2 &p : poses) mean += layerAt(p);
+        return mean / double(poses.size()) > std::max(layerAt(start), layerAt(goal)) + 8.0;
     }
 };
 
@@ -140,17 +150,6 @@ struct CarLatticeResult
     std::size_t states{0};      ///< lattice states generated
     std::size_t heuristicNodes{0};  ///< 2D nodes the obstacle-aware heuristic closed
     int shotsTried{0};
-};
-
-/// What CarLatticeSearch::shortcut() did to a path.
-struct ShortcutReport
-{
-    int curves{0};            ///< curves tried (each sampled and checked)
-    int replaced{0};          ///< stretches replaced by a curve
-    double lengthBefore{0.0}; ///< m
-    double lengthAfter{0.0};  ///< m
-    double costBefore{0.0};   ///< by the cost model, as shortcut() measures it
-    double costAfter{0.0};
 };
 
 /**
@@ -169,11 +168,10 @@ struct ShortcutReport
  * the 2D graph does not join start and goal, the Euclidean part alone is used, so the search
  * still returns the explored state nearest the goal (an approximate solution) rather than
  * trusting a relaxation to prove the goal unreachable.
- * Goal: a node passing inGoal, or a Dubins curve (radius = the lattice's turning radius) from
- * the node to the goal position whose footprint is free: tried at every expansion within 2 R +
- * 2 cells of the goal and at every 8th within 30 R; with a free goal heading the end yaws tried
- * are the lattice headings and the bearing from the node. Closed states stay closed (each node
- * keeps the primitive it was first expanded with), as in Hybrid A*.
+ * Goal: a node passing inGoal, or a free curve of the lattice's family from the node to the
+ * goal (AnalyticExpansion: when it is tried, which curves, the free check). Closed states stay
+ * closed (each node keeps the primitive it was first expanded with), as in Hybrid A*. A found
+ * path is shortened afterwards by PathShortcut (a post-processor of its own).
  */
 class CarLatticeSearch
 {
@@ -220,45 +218,11 @@ public:
     /// curveFree() with the body grown by @p extra metres more (room a follower needs where a
     /// path is changed after the search).
     bool curveFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt, double extra) const;
-    /// curveFree() for the analytic expansion's long curves: polls the run's termination
-    /// condition every 64 poses (a thousand poses on a slow application checker take tens of
-    /// ms) and answers false when it fired.
-    bool shotFree(const Pose2 &from, int n, const std::function<Pose2(int)> &poseAt) const;
-    /// With clothoid turns (forwards only): a turn-straight-turn curve of the same turns from
-    /// @p from to @p to whose body is free (the two shortest tried), sampled as the shot is, in
-    /// @p poses with its length and turning; false when neither is free. tryShot() takes it in
-    /// place of the Dubins curve, whose arcs would break the curvature rate.
-    bool clothoidShot(const Pose2 &from, const Pose2 &to, std::vector<Pose2> &poses, double &length, double &turn) const;
-
-    /**
-     * @brief Shortens a found path (dense world poses, start first, ending where it must end)
-     * by the curves of the analytic expansion: between poses about 0.3 m apart along it (and
-     * its cusps; farther apart on a long path, at most about 80 of them on a reversing
-     * lattice, 40 on a forward one, whose shortcuts span at most 12 R), from each one the
-     * farthest later one that a curve of the lattice's family (Reeds-Shepp when it reverses,
-     * its clothoid turn-straight-turn curves with clothoid turns, also with turns of 2 and 4
-     * R at the same rate, else Dubins; the two shortest words of each) joins is reached by
-     * that curve, if the curve
-     * - is free with the body grown 5 cm beyond the search's margin (curveFree(): every
-     *   pose, swept motion certified as the search's own), so that it leaves a follower room
-     *   instead of grazing what the lattice kept clear of,
-     * - has no flick of the wheels (an arc between arcs of the other side shorter than a
-     *   quarter circle or 2 m),
-     * - is shorter than the stretch it replaces, costs less by @p cost with @p q's reverse and
-     *   cusp penalties and cost layer (each run of one gear and turning side costed as a
-     *   motion of the search), and adds no gear change,
-     * - with clothoid turns: joins the path where it runs straight (its curves start and end
-     *   at curvature 0), the rate where it joins measured by curvatureRateProfile().
-     * So the path keeps its ends and its guarantees (curvature within the lattice's turning
-     * radius; within its curvature rate with clothoid turns), never gets longer or costlier,
-     * and never gains a cusp: what a lattice's few headings and coarse cells leave over (a
-     * parking manoeuvre some metres longer than a continuous planner's) is taken off. Up to
-     * @p maxCurves curves are checked; @p cancelled is polled between them (the path is then
-     * kept as far as it got: still valid); after 4 free curves from one anchor that are no
-     * better, the next anchor. Two passes at most.
-     */
-    ShortcutReport shortcut(std::vector<Pose2> &path, const CarLatticeQuery &q, const LatticeCostModel &cost,
-                            const std::function<bool()> &cancelled, int maxCurves) const;
+    /// The lattice's clothoid turns, with which its analytic expansion joins the goal (null:
+    /// arcs, or a reversing lattice).
+    const ClothoidTurn *clothoidTurns() const { return analytic_->clothoidTurns(); }
+    /// The analytic expansion the search tries towards the goal.
+    const AnalyticExpansion &analyticExpansion() const { return *analytic_; }
 
 private:
     friend struct CarExpander;
@@ -273,6 +237,7 @@ private:
     std::uint32_t known(int i, int j, int h) const { return states_.find(pack(i, j, h)); }
     void setFrame(const CarLatticeQuery &q);
     bool fitsAtNode(int i, int j) const;
+    /// The analytic expansion from state @p s (AnalyticExpansion: when, which curves, free).
     bool tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions);
     /// The primitive's samples from lattice-frame pose @p at (a node's, or a hybrid state's) in
     /// world coordinates, into @p out.
@@ -318,7 +283,7 @@ private:
     double shotCost_{0};
     int shotsTried_{0};
     std::unique_ptr<CurveTable> curveTable_;  ///< kept across runs (curveTable())
-    std::unique_ptr<ClothoidTurn> clothoid_;  ///< the lattice's turns, for clothoidShot() (null: arcs or reversing)
+    std::unique_ptr<AnalyticExpansion> analytic_;  ///< the shot to the goal (tryShot())
     const std::function<bool()> *cancelled_{nullptr};  ///< the running query's (run())
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file StretchCost.h
-/// @brief How the shortcut (CarLatticeSearch::shortcut()) measures a stretch of a path: the
+/// @brief How the shortcut (PathShortcut::apply()) measures a stretch of a path: the
 /// gear of a step and the stretch's cost by the planner's cost model.
 
 #include "gridcar/core/Pose2.h"

@@ -1,6 +1,6 @@
-/// @file CarLatticeShortcut.cpp
-/// @brief A found path shortened by the analytic expansion's curves (CarLatticeSearch::shortcut()).
-#include "gridcar/planners/search/CarLatticeSearch.h"
+/// @file PathShortcut.cpp
+/// @brief A found path shortened by the analytic expansion's curves (PathShortcut::apply()).
+#include "gridcar/planners/search/PathShortcut.h"
 
 #include "gridcar/core/Angles.h"
 #include "gridcar/curves/CarCurves.h"
@@ -42,7 +42,7 @@ constexpr double kWideTurns[] = {2.0, 4.0};
 /// An arc between arcs of the other side is at least min(this, a quarter circle) long (m).
 constexpr double kMaxFlick = 2.0;
 
-/// One shortcut run over a path (CarLatticeSearch::shortcut()): the candidate curves between
+/// One shortcut run over a path (PathShortcut::apply()): the candidate curves between
 /// two of its poses, their tests, one pass along the path.
 class Shortcutter
 {
@@ -339,19 +339,29 @@ private:
 };
 }  // namespace
 
-ShortcutReport CarLatticeSearch::shortcut(std::vector<Pose2> &path, const CarLatticeQuery &q, const LatticeCostModel &cost,
-                                          const std::function<bool()> &cancelled, int maxCurves) const
+PathShortcut::PathShortcut(const CarCollision &collision, const CarLattice &lattice, const ClothoidTurn *clothoid)
+  : col_(collision), lattice_(lattice), clothoid_(clothoid)
+{
+}
+
+PathShortcut::PathShortcut(const CarLatticeSearch &search)
+  : PathShortcut(search.collision(), search.lattice(), search.clothoidTurns())
+{
+}
+
+ShortcutReport PathShortcut::apply(std::vector<Pose2> &path, const CarLatticeQuery &q, const LatticeCostModel &cost,
+                                   const std::function<bool()> &cancelled, int maxCurves) const
 {
     ShortcutReport rep;
     rep.lengthBefore = rep.lengthAfter = pathLength(path);
     int cusps = 0;
     rep.costBefore = rep.costAfter = path.size() > 1 ? stretchCost(path, 0, 0, q, cost, cusps) : 0.0;
     if (path.size() < 3) return rep;
-    const CarLatticeConfig &cfg = lattice_->config();
+    const CarLatticeConfig &cfg = lattice_.config();
     // the body grown by kClearance beyond the search's margin: a curve is taken where it
     // leaves a follower room, not where it grazes an obstacle
-    const Shortcutter::Geometry geo{*col_, clothoid_.get(), cfg.turnRadius, cfg.spacing, col_->reach(),
-                                    lattice_->margin() + kClearance, cfg.reverse};
+    const Shortcutter::Geometry geo{col_, clothoid_, cfg.turnRadius, cfg.spacing, col_.reach(),
+                                    lattice_.margin() + kClearance, cfg.reverse};
     Shortcutter sc(geo, q, cost, cancelled, maxCurves, rep);
     for (int pass = 0; pass < 2 && !sc.stopped(); ++pass)
         if (!sc.pass(path)) break;
