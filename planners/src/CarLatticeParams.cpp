@@ -88,6 +88,8 @@ std::vector<Field> makeFields()
                        "in [0, 10000] 1/m^2 (0: the vehicle's)", "curvature rate limit, 1/m^2 (0: the vehicle's)"));
     f.push_back(number("cost_layer_weight", &S::costLayerWeight, 0.0, 1000.0, "0.:0.5:100.",
                        "in [0, 1000] (extra metres per metre at cost 252)", "weight of the map's cost layer"));
+    f.push_back(number("clearance", &S::clearance, 0.0, 10.0, "0.:0.05:2.", "a length in [0, 10] m",
+                       "soft margin, m: motions nearer an obstacle than this cost more (0: off)"));
     f.push_back({"turns", "auto,arc,clothoid", "the lattice's turns: auto, arc, clothoid",
                  [](S &s, const std::string &v) {
                      s.turns = TurnShape(pick("turns", v, kTurns, "auto, arc or clothoid"));

@@ -108,34 +108,55 @@ struct CarLatticeQuery : CarGoalTerms
     /// cost(), 0..252) and settings.costLayerWeight > 0.
     bool layered() const { return map && settings.costLayerWeight > 0 && map->grid().hasCosts(); }
     /// True if a motion's cost depends on where it is on the map (mapCost() is not 0).
-    bool mapCosts() const { return layered(); }
+    bool mapCosts() const { return layered() || (map && settings.clearance > 0); }
     /// The map's cost layer value at @p p (0..252).
     double layerAt(const Pose2 &p) const
     {
         const Cell cell = map->grid().worldToCell(p.x, p.y);
         return map->grid().cost(cell.col, cell.row);
     }
+    /// The clearance's extra metres per metre at @p p: (1 - room / clearance)^2 where the body's
+    /// room (FootprintChecker::freeSlack()) is below the clearance, else 0.
+    double nearAt(const Pose2 &p) const
+    {
+        const double room = std::max(0.0, map->freeSlack(p));
+        return room < settings.clearance ? (1 - room / settings.clearance) * (1 - room / settings.clearance) : 0.0;
+    }
     /// The extra cost (m) of a motion over @p poses of @p length metres read off the map (the
     /// callers convert it by the cost model's costPerMetreOfPenalty()): with a cost layer,
-    /// weight x (mean cost of its poses / 252) x its length.
+    /// weight x (mean cost of its poses / 252) x its length; with a clearance, the mean of
+    /// nearAt() over its poses x its length.
     double mapCost(const std::vector<Pose2> &poses, double length) const
     {
         if (!mapCosts() || poses.empty()) return 0.0;
-        double layerSum = 0;
-        for (const Pose2 &p : poses) layerSum += layerAt(p);
-        return settings.costLayerWeight * layerSum / (252.0 * double(poses.size())) * length;
+        const bool layer = layered(), near = map && settings.clearance > 0;
+        double layerSum = 0, nearSum = 0;
+        for (const Pose2 &p : poses)
+        {
+            if (layer) layerSum += layerAt(p);
+            if (near) nearSum += nearAt(p);
+        }
+        const double n = double(poses.size());
+        return (settings.costLayerWeight * layerSum / (252.0 * n) + nearSum / n) * length;
     }
     /// The analytic expansion ends the search at once, so with map costs its curve must not
     /// cross costlier ground than the query's start and goal: the search then goes round a
     /// costly band, not through it (measured from the query's start, not the curve's, or a
     /// node just inside the band would shoot through the rest). True when @p poses' mean
-    /// cost-layer value exceeds that of both ends + 8.
+    /// cost-layer value exceeds that of both ends + 8, or with a clearance when some pose of
+    /// them is nearer an obstacle (nearAt()) than both ends are.
     bool crossesCostlierGround(const std::vector<Pose2> &poses) const
     {
-        if (!layered() || poses.empty()) return false;
-        double mean = 0;
-        for (const Pose2 &p : poses) mean += layerAt(p);
-        return mean / double(poses.size()) > std::max(layerAt(start), layerAt(goal)) + 8.0;
+        if (!mapCosts() || poses.empty()) return false;
+        if (layered())
+        {
+            double mean = 0;
+            for (const Pose2 &p : poses) mean += layerAt(p);
+            if (mean / double(poses.size()) > std::max(layerAt(start), layerAt(goal)) + 8.0) return true;
+        }
+        if (!(map && settings.clearance > 0)) return false;
+        const double ends = std::max(nearAt(start), nearAt(goal));
+        return std::any_of(poses.begin(), poses.end(), [&](const Pose2 &p) { return nearAt(p) > ends + 1e-9; });
     }
 };
 

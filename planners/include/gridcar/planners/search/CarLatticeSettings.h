@@ -60,6 +60,11 @@ struct CarLatticeSettings
     double curvatureRate{0.0};       ///< `curvature_rate`, 1/m^2; 0 = the vehicle's
     /// `cost_layer_weight`: extra cost per metre = weight x the map's cost layer value / 252
     double costLayerWeight{0.0};
+    /// `clearance`, m: a soft margin (as Nav2's inflation): a motion whose body passes nearer
+    /// an obstacle than this costs up to twice as much, (1 - room / clearance)^2 extra metres
+    /// per metre at each pose, room the body's free slack in the distance field
+    /// (FootprintChecker::freeSlack()); the body may still pass closer where it must. 0: off
+    double clearance{0.0};
     TurnShape turns{TurnShape::Auto};  ///< `turns`
     /// `shortcut`: a found path shortened by the analytic expansion's curves where they are
     /// free, shorter and cheaper (auto: on when the lattice reverses)
