@@ -40,7 +40,7 @@ int main()
             if (d < 10 || d > 20) continue;
             gridcar::PlannerConfig config;
             config.name = "corner-astar";
-            config.params = {{"cost", "length"}};
+            config.params = {{"heuristic_weight", "1"}};
             const auto planner = gridcar::configurePlanner(si, config);
             const gridcar::QueryResult q = gridcar::runQuery(setup, planner, a, b, 10.0);
             std::printf("query: %s, %zu poses, %.2f m, %s\n", q.status.asString().c_str(), q.path.size(), q.metrics.length,
