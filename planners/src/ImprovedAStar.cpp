@@ -89,6 +89,10 @@ double ObstacleCost::atCell(const GridSE2StateSpace &space, int col, int row) co
 
 ImprovedAStar::ImprovedAStar(const ompl::base::SpaceInformationPtr &si) : CarLatticePlanner(si, "improved-astar")
 {
+    // on the car lattice the consistent ordering by default: paper I's greedy priority takes
+    // long detours and loops there (mode=paper keeps it; improved-astar-grid is the paper's
+    // own search, greedy by default)
+    obstacles_.settings.paperMode = false;
     declareSettings<ImprovedSettings>(params(), getName(), improvedSettingFields(), obstacles_.settings,
                                       [this](const std::string &n) { parameterSet(n); });
 }

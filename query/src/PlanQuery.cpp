@@ -75,6 +75,7 @@ std::vector<NamedConfiguration> everyConfiguration()
     std::vector<NamedConfiguration> out;
     for (const auto &n : plannerNames()) out.push_back({n, {}});
     out.push_back({"improved-astar-grid", {{"mode", "integral"}}});
+    out.push_back({"improved-astar", {{"mode", "paper"}}});
     for (const char *n : {"astar-octile+smooth", "rrtconnect+smooth", "rrtconnect+simplify"}) out.push_back({n, {}});
     return out;
 }

@@ -40,10 +40,11 @@ namespace gridcar
  * of that (the start state counts floor(need / 2) steps already run; a goal is accepted with
  * k >= ceil(need / 2)). A point vehicle (K_max = inf) has need = 0.
  *
- * **Evaluation** (`mode`):
+ * **Evaluation** (`mode`; default `integral` on improved-astar, `paper` on improved-astar-grid):
  * - `paper`: f = g' + h (1 + o) + s, g' = g if g < o else 0 (eq. 4-5); g the path length.
  *   Since g exceeds o after a step or two, this is in effect a greedy best-first search on
- *   h (1 + o): few expansions, no optimality. Closed states are not reopened.
+ *   h (1 + o): few expansions, no optimality. Closed states are not reopened. On the car
+ *   lattice it wanders (loops and detours twice the length where a straight route exists).
  * - `integral`: g = integral of (1 + o) along the path (trapezoid per step: length x
  *   (1 + (o(a) + o(b)) / 2), the cost of ObstacleDistanceObjective + path length), f = g + h.
  *   Optimal for that cost on the lattice when h is admissible.
@@ -76,7 +77,8 @@ namespace gridcar
 /// ImprovedAStar), declared from one table (improvedSettingFields()).
 struct ImprovedSettings
 {
-    bool paperMode{true};  ///< `mode` = paper (else integral)
+    /// `mode` = paper (else integral); improved-astar-grid's default, improved-astar's is integral
+    bool paperMode{true};
     double delta{1.0};     ///< `delta`, the obstacle-cost gain
     bool voronoi{false};   ///< `obstacle_cost` = voronoi (else inverse)
 };

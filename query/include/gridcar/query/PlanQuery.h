@@ -28,8 +28,8 @@ PlannerParams parsePlannerParams(const std::vector<std::string> &settings);
 /// A planner name with parameter settings.
 using NamedConfiguration = std::pair<std::string, PlannerParams>;
 /// Every registry name, plus the configurations worth measuring apart: improved-astar-grid in
-/// integral mode, astar-octile+smooth, rrtconnect+smooth, rrtconnect+simplify (the
-/// termination test and benchmark run them all).
+/// integral mode, improved-astar in paper mode, astar-octile+smooth, rrtconnect+smooth,
+/// rrtconnect+simplify (the termination test and benchmark run them all).
 std::vector<NamedConfiguration> everyConfiguration();
 /// "NAME P=V P=V" for messages and tables.
 std::string configurationLabel(const NamedConfiguration &c);
