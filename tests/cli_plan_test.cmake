@@ -26,6 +26,24 @@ if(NOT head MATCHES "^89504e47")
 endif()
 run_gridcar(0 plan ${M} --planner corner-astar --start 0.5,5.5 --goal 11.5,0.5 --param corner_weight_45=1.5)
 expect_in("${OUT}" "corner-astar: Exact solution")
+# a refused value: exit 2, one message naming the parameter, its value and what it takes, and
+# nothing of OMPL's internals
+foreach(bad "heuristic_weight=abc;a number in [1, 100]" "cost=tiem;'corners' or 'time'" "reverse=maybe;off (0, false), on (1, true) or auto")
+  list(GET bad 0 setting)
+  list(GET bad 1 takes)
+  run_gridcar(2 plan ${M} --planner corner-astar --start 0.5,5.5 --goal 11.5,0.5 --param ${setting})
+  expect_in("${ERR}" "parameter ${setting} not accepted")
+  expect_in("${ERR}" "${takes}")
+  foreach(leak "GenericParam.h" "Warning:" "Invalid value format")
+    string(FIND "${ERR}" "${leak}" pos)
+    if(NOT pos EQUAL -1)
+      message(FATAL_ERROR "--param ${setting}: OMPL's warning leaked: ${ERR}")
+    endif()
+  endforeach()
+endforeach()
+# OMPL's own planners: their parameter named, with its range
+run_gridcar(2 plan ${M} --planner rrtconnect --start 0.5,5.5 --goal 11.5,0.5 --param range=abc)
+expect_in("${ERR}" "parameter range=abc not accepted")
 
 # a grid-cell search on a car space is told that it ignores the curves
 run_gridcar(0 plan --map embedded --planner astar-octile --vehicle paper-c-car --space reeds-shepp --start 504.365,384.271 --goal 587.805,345.829)

@@ -10,11 +10,13 @@
 #include "gridcar/spaces/OmplAdapters.h"
 
 #include <ompl/base/PlannerData.h>
+#include <ompl/util/Console.h>
 #include <ompl/geometric/PathGeometric.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <mutex>
 
 namespace gridcar
 {
@@ -32,6 +34,26 @@ PlannerParams parsePlannerParams(const std::vector<std::string> &settings)
 
 namespace
 {
+/// The last warning OMPL logged on this thread while a parameter was being set.
+std::string &lastParamWarning()
+{
+    thread_local std::string text;
+    return text;
+}
+
+/// OMPL's log while a parameter is set: the last warning kept (the reason a value was refused),
+/// nothing printed. One object for the process (OMPL keeps the handler it replaces as its
+/// "previous" one: it must never dangle), installed under a lock.
+struct ParamWarnings : ompl::msg::OutputHandler
+{
+    void log(const std::string &text, ompl::msg::LogLevel level, const char *, int) override
+    {
+        if (level >= ompl::msg::LOG_WARN) lastParamWarning() = text;
+    }
+};
+ParamWarnings paramWarnings;
+std::mutex paramWarningsLock;
+
 void applyParam(ompl::base::Planner &planner, const std::string &name, const std::string &value)
 {
     if (!planner.params().hasParam(name))
@@ -42,10 +64,37 @@ void applyParam(ompl::base::Planner &planner, const std::string &name, const std
         for (const auto &n : names) list += (list.empty() ? "" : ", ") + n;
         throw InputError("planner " + planner.getName() + " has no parameter '" + name + "' (its parameters: " + list + ")");
     }
-    // the setters throw std::invalid_argument, which OMPL's setParam() turns into false
-    if (!planner.params().setParam(name, value))
-        throw InputError("planner " + planner.getName() + ": parameter " + name + "=" + value +
-                         " not accepted (see the planner's documentation for the values it takes)");
+    // the setters throw std::invalid_argument, which OMPL's setParam() turns into false after
+    // logging the reason as a warning: the warning is caught here and becomes the message
+    bool accepted = false;
+    {
+        const std::lock_guard<std::mutex> lock(paramWarningsLock);
+        lastParamWarning().clear();
+        ompl::msg::OutputHandler *previous = ompl::msg::getOutputHandler();
+        const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+        ompl::msg::useOutputHandler(&paramWarnings);
+        ompl::msg::setLogLevel(std::min(level, ompl::msg::LOG_WARN));
+        try
+        {
+            accepted = planner.params().setParam(name, value);
+        }
+        catch (const std::exception &e)  // OMPL's own conversions throw past setParam() (a number that is not one)
+        {
+            lastParamWarning() = e.what();
+        }
+        ompl::msg::setLogLevel(level);
+        ompl::msg::useOutputHandler(previous);
+    }
+    if (accepted) return;
+    std::string why = lastParamWarning();
+    const std::string prefix = "Invalid value format specified for parameter '" + name + "': ";
+    if (why.rfind(prefix, 0) == 0) why = why.substr(prefix.size());
+    // our planners' reasons name the planner, the setting and what it takes; OMPL's say little,
+    // so its range suggestion (lo:step:hi, or the choices) goes with them
+    const bool ours = why.rfind(planner.getName() + ":", 0) == 0;
+    const std::string range = ours ? "" : planner.params().getParam(name)->getRangeSuggestion();
+    throw InputError("planner " + planner.getName() + ": parameter " + name + "=" + value + " not accepted" +
+                     (why.empty() ? "" : ": " + why) + (range.empty() ? "" : " (its range: " + range + ")"));
 }
 
 }  // namespace
