@@ -8,8 +8,6 @@
 // Output: a Markdown table per area on stdout, progress on stderr. See docs/performance.md.
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/bench/RandomPairs.h"
-#include "gridcar/map/CampusGenerator.h"
-#include "gridcar/map/MapIO.h"
 
 #include <CLI/CLI.hpp>
 #include <ompl/util/Console.h>
@@ -19,7 +17,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
@@ -28,12 +25,7 @@ using namespace gridcar;
 
 namespace
 {
-struct Area
-{
-    std::string name, map;  ///< map: a file under the shared folder, or "embedded"
-    std::string vehicle;
-    double lo, hi;          ///< m, straight-line distance of the pairs
-};
+using Area = BenchArea;
 
 const std::vector<Area> kAreas = {
     {"willow-garage", "maps/ros/willow_garage/willow-2010-02-18-0.10.yaml", "paper-c-robot", 5, 40},
@@ -111,19 +103,8 @@ std::vector<Run> runConfiguration(GridSetup &setup, const NamedConfiguration &c,
 
 void runArea(const Options &o, const Area &area)
 {
-    std::shared_ptr<const OccupancyGrid> grid;
-    if (area.map == "embedded")
-        grid = std::make_shared<const OccupancyGrid>(generateCampus(CampusParams()));
-    else
-    {
-        const std::string file = o.shared + "/" + area.map;
-        if (!std::filesystem::exists(file))
-        {
-            std::printf("\n%s: %s is absent, skipped\n", area.name.c_str(), file.c_str());
-            return;
-        }
-        grid = std::make_shared<const OccupancyGrid>(loadMap(file));
-    }
+    const std::shared_ptr<const OccupancyGrid> grid = loadAreaMap(o.shared, area);
+    if (!grid) return;
     const auto t0 = std::chrono::steady_clock::now();
     GridSetup setup = makeGridSetup(grid, VehicleParams::preset(area.vehicle));
     const double mapSetup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

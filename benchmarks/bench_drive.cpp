@@ -8,8 +8,6 @@
 // not arrive, with the follower's reason), progress on stderr. See docs/simulation.md.
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/bench/RandomPairs.h"
-#include "gridcar/map/CampusGenerator.h"
-#include "gridcar/map/MapIO.h"
 #include "gridcar/objectives/Objectives.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/vehicle/Dynamics.h"
@@ -21,7 +19,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -29,12 +26,7 @@ using namespace gridcar;
 
 namespace
 {
-struct Area
-{
-    std::string name, map;  ///< map: a file under the shared folder, or "embedded"
-    std::string vehicle;
-    double lo, hi;          ///< m, straight-line distance of the pairs
-};
+using Area = BenchArea;
 
 const std::vector<Area> kAreas = {
     {"willow-garage", "maps/ros/willow_garage/willow-2010-02-18-0.10.yaml", "paper-c-robot", 5, 40},
@@ -130,19 +122,8 @@ Tally runPlanner(const Options &o, const Area &area, GridSetup &setup, const std
 
 void runArea(const Options &o, const Area &area, std::vector<std::string> &failures)
 {
-    std::shared_ptr<const OccupancyGrid> grid;
-    if (area.map == "embedded")
-        grid = std::make_shared<const OccupancyGrid>(generateCampus(CampusParams()));
-    else
-    {
-        const std::string file = o.shared + "/" + area.map;
-        if (!std::filesystem::exists(file))
-        {
-            std::printf("\n%s: %s is absent, skipped\n", area.name.c_str(), file.c_str());
-            return;
-        }
-        grid = std::make_shared<const OccupancyGrid>(loadMap(file));
-    }
+    const std::shared_ptr<const OccupancyGrid> grid = loadAreaMap(o.shared, area);
+    if (!grid) return;
     const VehicleParams v = VehicleParams::preset(area.vehicle);
     GridSetup setup = makeGridSetup(grid, v);
     const auto pairs = randomPairs(*setup.checker, o.pairs, o.seed, area.lo, area.hi);

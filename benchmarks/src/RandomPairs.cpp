@@ -1,13 +1,30 @@
 /// @file RandomPairs.cpp
-/// @brief randomPairs(): seeded start / goal pairs for the benchmark programs.
+/// @brief randomPairs(): seeded start / goal pairs for the benchmark programs; loadAreaMap().
 #include "gridcar/bench/RandomPairs.h"
 
+#include "gridcar/map/CampusGenerator.h"
+#include "gridcar/map/MapIO.h"
+
 #include <cmath>
+#include <cstdio>
 #include <deque>
+#include <filesystem>
 #include <random>
 
 namespace gridcar
 {
+std::shared_ptr<const OccupancyGrid> loadAreaMap(const std::string &shared, const BenchArea &area)
+{
+    if (area.map == "embedded") return std::make_shared<const OccupancyGrid>(generateCampus(CampusParams()));
+    const std::string file = shared + "/" + area.map;
+    if (!std::filesystem::exists(file))
+    {
+        std::printf("\n%s: %s is absent, skipped\n", area.name.c_str(), file.c_str());
+        return nullptr;
+    }
+    return std::make_shared<const OccupancyGrid>(loadMap(file));
+}
+
 std::vector<std::pair<Pose2, Pose2>> randomPairs(const FootprintChecker &fc, int n, unsigned seed, double lo, double hi)
 {
     const OccupancyGrid &g = fc.grid();

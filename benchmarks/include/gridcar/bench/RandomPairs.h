@@ -1,16 +1,32 @@
 #pragma once
 /// @file RandomPairs.h
 /// @brief Seeded start / goal pairs on a real map for the benchmark programs (bench_native,
-/// bench_drive): positions where the vehicle fits at every heading, joined by the free space.
+/// bench_drive, bench_defaults): positions where the vehicle fits at every heading, joined by the
+/// free space; and the areas (a map and a vehicle) the suites run them on.
 
 #include "gridcar/collision/FootprintChecker.h"
 #include "gridcar/core/Pose2.h"
+#include "gridcar/map/OccupancyGrid.h"
 
+#include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace gridcar
 {
+/// One area of a benchmark suite: a map, a vehicle, how far apart its pairs are.
+struct BenchArea
+{
+    std::string name, map;  ///< map: a file under the shared folder, or "embedded"
+    std::string vehicle;
+    double lo, hi;          ///< m, straight-line distance of the pairs
+};
+
+/// The area's map: the embedded campus, or the file under @p shared (null, with a line on
+/// stdout saying it was skipped, when the file is absent).
+std::shared_ptr<const OccupancyGrid> loadAreaMap(const std::string &shared, const BenchArea &area);
+
 /**
  * @brief @p n seeded random pairs, their straight-line distance in [@p lo, @p hi] m, on cells
  * where the circumscribed disc fits, both in one 4-connected region of the cells with
