@@ -6,6 +6,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake pkg-config
   libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
+  libboost-program-options-dev
   libfcl-dev libeigen3-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libstb-dev
   libgtest-dev libbenchmark-dev

@@ -47,6 +47,14 @@ TEST(FallbackSchedule, StagesInTheirDocumentedOrder)
     coarse.fine = false;
     EXPECT_EQ(FallbackSchedule(coarse).stages().size(), 3u);
 
+    FallbackOptions nearEnds = everything();  // reverse=auto: first the lattice reversing everywhere
+    nearEnds.reverseNearEnds = true;
+    ASSERT_EQ(FallbackSchedule(nearEnds).stages().size(), 6u);
+    EXPECT_EQ(FallbackSchedule(nearEnds).stages().front(), (FallbackStage{FallbackSearch::Lattice, false}));
+    EXPECT_EQ(FallbackSchedule(nearEnds).stages()[1], (FallbackStage{FallbackSearch::Lattice, true}));
+    nearEnds.latticeReverses = false;  // (a forward lattice has nothing to reverse everywhere)
+    EXPECT_FALSE(FallbackSchedule(nearEnds).stages().front() == (FallbackStage{FallbackSearch::Lattice, false}));
+
     FallbackOptions none = everything();  // no hybrid set, forward lattice: nothing to fall back on
     none.hybrid = false;
     none.latticeReverses = false;

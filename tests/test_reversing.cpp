@@ -7,6 +7,7 @@
 #include "gridcar/path/Drivability.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/core/Angles.h"
+#include "gridcar/planners/CarLatticePlanner.h"
 #include "gridcar/planners/CornerAStar.h"
 #include "gridcar/planners/GridPlanner.h"
 #include "gridcar/spaces/OmplAdapters.h"
@@ -16,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -87,6 +89,95 @@ TEST(Reversing, BothPlannersBackOutOfADeadEnd)
         EXPECT_NEAR(path.back().x, 4.0, 1e-6);
         EXPECT_NEAR(path.back().y, 6.0, 1e-6);
         EXPECT_NEAR(wrapAngle(path.back().yaw), 0.0, 1e-6);
+    }
+}
+
+namespace
+{
+/// 70 m x 40 m of open ground at 0.1 m, a street 2.6 m wide (y 4.7-7.3 m) from x = 8 m to its
+/// closed end at x = 65 m along the bottom: too narrow for paper I's car to turn in.
+std::shared_ptr<OccupancyGrid> openGroundAndLongDeadEnd()
+{
+    auto g = std::make_shared<OccupancyGrid>(700, 400, 0.1, CellState::Free);
+    for (int r = 0; r < g->height(); ++r)
+        for (int c = 0; c < g->width(); ++c)
+        {
+            const double x = g->cellCenterX(c), y = g->cellCenterY(r);
+            if (x >= 8.0 && y < 12.0 && (y < 4.7 || y > 7.3 || x >= 65.0)) g->set(c, r, CellState::Occupied);
+        }
+    return g;
+}
+
+/// The largest distance of a pose driven backwards from both @p a and @p b (0: none backwards).
+double farthestBackwardPose(const std::vector<Pose2> &path, const Pose2 &a, const Pose2 &b)
+{
+    double far = 0;
+    for (std::size_t i = 1; i < path.size(); ++i)
+    {
+        const double dx = path[i].x - path[i - 1].x, dy = path[i].y - path[i - 1].y;
+        if (dx * std::cos(path[i].yaw) + dy * std::sin(path[i].yaw) >= -1e-9) continue;
+        far = std::max(far, std::min(std::hypot(path[i].x - a.x, path[i].y - a.y), std::hypot(path[i].x - b.x, path[i].y - b.y)));
+    }
+    return far;
+}
+}  // namespace
+
+// The default, reverse=auto, reverses where manoeuvres are: within reverse_zone (2 R_min + the
+// car's length) of the start and the goal (a primitive or a shot may end up to a couple of
+// metres past it). With no penalty on reversing, reverse=on backs the whole 32 m to a goal
+// straight behind the car; auto does not, and still arrives exactly.
+TEST(Reversing, AutoReversesNearTheEndsOnly)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    GridSetup s = makeGridSetup(openGroundAndLongDeadEnd(), VehicleParams::preset("paper-i"));
+    const Pose2 start{56.0, 25.0, 0.0}, goal{24.0, 25.0, 0.0};
+    double zone = 0, farOn = 0;
+    for (const char *reverse : {"on", "auto"})
+    {
+        SCOPED_TRACE(reverse);
+        auto p = std::dynamic_pointer_cast<CarLatticePlanner>(makePlanner(s.ss->getSpaceInformation(), "corner-astar"));
+        ASSERT_TRUE(p);
+        EXPECT_EQ(p->carSettings().reverse, AutoSwitch::Auto);  // the default
+        ASSERT_TRUE(p->params().setParam("reverse", reverse));
+        ASSERT_TRUE(p->params().setParam("reverse_penalty", "1"));
+        const QueryResult r = runQuery(s, p, start, goal, 10.0);
+        ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
+        EXPECT_TRUE(r.drivability.drivable) << r.drivability.reason;
+        EXPECT_LT(test::poseError(r.path.back(), goal), 1e-6);
+        const double far = farthestBackwardPose(r.path, start, goal);
+        if (std::string(reverse) == "on")
+        {
+            EXPECT_LT(p->reverseWithin(), 0.0);
+            farOn = far;
+            continue;
+        }
+        zone = p->reverseWithin();
+        const VehicleParams v = VehicleParams::preset("paper-i");
+        EXPECT_NEAR(zone, 2 * p->turningRadius() + v.length, 1e-9);
+        EXPECT_LE(far, zone + 2.5);
+    }
+    // (on: backwards farther from both ends than the zone, or the test above proves nothing)
+    EXPECT_GT(farOn, zone + 2.5);
+}
+
+// Out of a 57 m dead end too narrow to turn in, to the open ground behind: the search that
+// reverses near the ends only cannot back the 30 m between its zones; the fallback reversing
+// everywhere (FallbackSchedule) finds the way, exact and drivable, with the default settings.
+TEST(Reversing, AutoFallsBackToReversingEverywhere)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    GridSetup s = makeGridSetup(openGroundAndLongDeadEnd(), VehicleParams::preset("paper-i"));
+    const Pose2 start{60.0, 6.0, 0.0}, goal{4.0, 6.0, 0.0};
+    for (const char *name : {"corner-astar", "improved-astar"})
+    {
+        SCOPED_TRACE(name);
+        auto p = std::dynamic_pointer_cast<CarLatticePlanner>(makePlanner(s.ss->getSpaceInformation(), name));
+        ASSERT_TRUE(p);
+        const QueryResult r = runQuery(s, p, start, goal, 10.0);
+        ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
+        EXPECT_TRUE(r.drivability.drivable) << r.drivability.reason;
+        EXPECT_LT(test::poseError(r.path.back(), goal), 1e-6);
+        EXPECT_GT(farthestBackwardPose(r.path, start, goal), p->reverseWithin() + 1.0);
     }
 }
 

@@ -2,6 +2,7 @@
 /// @brief The car lattice as a search family: set-up, one query, the explored graph.
 #include "gridcar/planners/CarFamily.h"
 
+#include "gridcar/planners/search/CarGoal.h"
 #include "gridcar/planners/search/CurvatureStep.h"
 #include "gridcar/planners/search/PathShortcut.h"
 #include "gridcar/spaces/OmplAdapters.h"
@@ -83,10 +84,11 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     last_ = main;
     // Where the search from the start ends without the goal (not stopped), the time left goes
     // to the fallback searches (FallbackSchedule: the order and the budgets); an answer is kept
-    // if it reaches the goal, or if there is none yet.
+    // if it reaches the goal, or if it ends nearer the goal than the one kept.
     FallbackOptions fo;
     fo.fixedEnds = goal.kind == GoalTarget::Kind::State && q.goalYawTolerance == 0 && !q.freeStartHeading;
     fo.latticeReverses = main->lattice().config().reverse;
+    fo.reverseNearEnds = q.reverseWithin >= 0;
     fo.hybrid = fallback_ != nullptr;
     fo.hybridReverses = fallback_ && fallback_->lattice().config().reverse;
     fo.fine = fallback_ && fineConfig_.cell >= 0.025;
@@ -96,6 +98,7 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         std::atomic<std::uint64_t> count{0};
         const std::function<bool()> stop = [&] { return cancelled() || count.load(std::memory_order_relaxed) >= budget; };
         CarLatticeQuery b = q;
+        b.reverseWithin = -1.0;  // the fallbacks reverse wherever they can
         if (st.fromGoal)
         {
             std::swap(b.start, b.goal);
@@ -107,9 +110,17 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         if (h.exact && st.fromGoal) std::reverse(h.path.begin(), h.path.end());
         const bool ended = h.outcome != SearchOutcome::Cancelled;
         h.expanded += r.expanded;
-        if (h.exact || r.path.empty())
+        // an approximate answer: the one ending nearer the goal (a search from the goal back
+        // has none to give); how the first search ended stays the run's (exhausted: nothing
+        // proved the goal unreachable, but the answer was not cut short by the time limit)
+        const CarGoal near(q);
+        const bool nearer = !st.fromGoal && !r.exact && !h.path.empty() && !r.path.empty() &&
+                            near.closeness(h.path.back()) < near.closeness(r.path.back());
+        if (h.exact || nearer || r.path.empty())
         {
+            const SearchOutcome first = r.outcome;
             r = std::move(h);
+            if (nearer) r.outcome = first;
             last_ = search;
         }
         else

@@ -56,7 +56,11 @@ std::vector<Field> makeFields()
     f.push_back(number("heuristic_weight", &S::heuristicWeight, 1.0, 100.0, "1.:0.05:3.", "a number in [1, 100]",
                        "weighted A*: the path costs at most this x the lattice optimum"));
     f.push_back(autoSwitch("reverse", &S::reverse, "off (0, false), on (1, true) or auto",
-                           "reverse motion: off, on, auto (on except on a Dubins space)"));
+                           "reverse motion: off, on (wherever it pays), auto (near the start and the goal, everywhere "
+                           "only if no path is found so; off on a Dubins space)"));
+    f.push_back(number("reverse_zone", &S::reverseZone, 0.0, 1000.0, "0.:0.5:50.", "a length in [0, 1000] m",
+                       "with reverse=auto, how far from the start and the goal the first search reverses, m "
+                       "(0: 2 R_min + the vehicle's length)"));
     f.push_back(number("reverse_penalty", &S::reversePenalty, 1.0, 1000.0, "1.:0.5:10.", "a factor in [1, 1000]",
                        "factor on the cost of motion driven backwards"));
     f.push_back({"cusp_penalty", "0.:1.:100.", "cost of a gear change, m (unset: the vehicle's stop and start)",

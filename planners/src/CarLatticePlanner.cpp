@@ -62,6 +62,7 @@ FamilyRun CarLatticePlanner::searchFamily(const ompl::base::State *start, const 
     terms.freeStartHeading = freeStartHeading();
     terms.cuspPenalty = cuspPenalty() * cost->costPerMetreOfPenalty();
     terms.curveWithin = curveWithin();
+    terms.reverseWithin = reverseWithin();
     terms.map = checker_;
     if (settings_.costLayerWeight > 0 && !terms.layered())
         OMPL_WARN("%s: cost_layer_weight is set but the map has no cost layer (a map_server map in scale or "
@@ -113,6 +114,13 @@ bool CarLatticePlanner::reversing() const
 {
     if (settings_.reverse == AutoSwitch::Off) return false;
     return !(onDubinsSpace() && settings_.reverse == AutoSwitch::Auto);
+}
+
+double CarLatticePlanner::reverseWithin() const
+{
+    if (settings_.reverse != AutoSwitch::Auto || !reversing()) return -1.0;
+    if (settings_.reverseZone > 0) return settings_.reverseZone;
+    return 2 * turningRadius() + std::max(0.0, vehicle().length);
 }
 
 double CarLatticePlanner::cuspPenalty() const

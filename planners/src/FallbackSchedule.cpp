@@ -9,6 +9,7 @@ namespace gridcar
 {
 FallbackSchedule::FallbackSchedule(const FallbackOptions &o)
 {
+    if (o.reverseNearEnds && o.latticeReverses) stages_.push_back({FallbackSearch::Lattice, false});
     if (o.fixedEnds && o.latticeReverses) stages_.push_back({FallbackSearch::Lattice, true});
     if (!o.hybrid) return;
     stages_.push_back({FallbackSearch::Hybrid, false});

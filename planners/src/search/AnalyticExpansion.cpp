@@ -48,7 +48,7 @@ AnalyticExpansion::AnalyticExpansion(const CarCollision &collision, const CarLat
   : col_(collision), lattice_(lattice)
 {
     const CarLatticeConfig &cfg = lattice_.config();
-    if (cfg.curvatureRate > 0 && !cfg.reverse) clothoid_ = std::make_unique<ClothoidTurn>(cfg.turnRadius, cfg.curvatureRate);
+    if (cfg.curvatureRate > 0) clothoid_ = std::make_unique<ClothoidTurn>(cfg.turnRadius, cfg.curvatureRate);
 }
 
 AnalyticExpansion::~AnalyticExpansion() = default;
@@ -78,7 +78,14 @@ bool AnalyticExpansion::shoot(const Pose2 &from, int gear, const CarLatticeQuery
     // gridcar's Dubins / Reeds-Shepp curves (OMPL 1.5.2's asserts on rounding errors and would
     // abort); near the goal the few shortest words per end yaw, since in a tight spot the
     // shortest one is often blocked where a slightly longer one is free
-    const bool rs = lattice_.config().reverse;
+    // reversing where the query lets it (CarLatticeQuery::reverseWithin): from there, and no
+    // farther than that
+    const bool rs = lattice_.config().reverse && q.mayReverseAt(from);
+    const auto reversesTooFar = [&](const CarCurve &c) {
+        if (!rs || q.reverseWithin < 0) return false;
+        const CurveDrive d = curveDrive(c, R, 0);
+        return (q.timeReversed ? d.forward : d.backward) > q.reverseWithin;
+    };
     const int words = near ? (rs ? 4 : 2) : 1;
     std::vector<std::pair<double, double>> cand;  // (length, index)
     std::vector<CarCurve> curves;
@@ -88,7 +95,7 @@ bool AnalyticExpansion::shoot(const Pose2 &from, int gear, const CarLatticeQuery
         // the curve family of the primitive set's directions: Reeds-Shepp when it reverses
         const Pose2 to{g.x, g.y, y};
         for (const CarCurve &c : rs ? reedsSheppCurves(from, to, R, words) : dubinsCurves(from, to, R, words))
-            if (c.length <= e + 2 * M_PI * R)
+            if (c.length <= e + 2 * M_PI * R && !reversesTooFar(c))
             {
                 cand.push_back({c.length, double(curves.size())});
                 curves.push_back(c);
@@ -117,7 +124,7 @@ bool AnalyticExpansion::shoot(const Pose2 &from, int gear, const CarLatticeQuery
         if (!free(from, n, poseAt, cancelled)) continue;
         CurveDrive d = curveDrive(path, R, gear);
         std::vector<Pose2> poses;
-        if (clothoid_)
+        if (clothoid_ && !rs)
         {
             // the Dubins curve's arcs break the curvature rate: its clothoid counterpart (the
             // free Dubins curve only tells where one is worth computing)

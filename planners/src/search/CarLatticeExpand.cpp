@@ -145,6 +145,7 @@ struct CarExpander
         const double c = S.lattice_->cell(), ca = std::cos(at.yaw), sa = std::sin(at.yaw);
         const double gs = S.space_.g(s);
         const bool mapped = S.query_.mapCosts();
+        const bool mayReverse = S.query_.mayReverseAt(from);
         for (std::size_t p = 0; p < prims.size(); ++p)
         {
             const LatticePrimitive &prim = prims[p];
@@ -163,6 +164,7 @@ struct CarExpander
             if (!S.h2d_->inBox(ni, nj)) continue;  // off the map's box
             const std::int8_t gear = prim.reverse ? -1 : 1;
             const bool backwards = prim.reverse != S.query_.timeReversed;
+            if (backwards && !mayReverse) continue;  // reversing only where manoeuvres are
             const bool cusp = S.gear_[s] != 0 && S.gear_[s] != gear;
             const auto stepOf = [&](double base) {
                 return (backwards ? base * S.query_.settings.reversePenalty : base) + (cusp ? S.query_.cuspPenalty : 0.0);

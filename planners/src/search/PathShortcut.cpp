@@ -360,8 +360,11 @@ ShortcutReport PathShortcut::apply(std::vector<Pose2> &path, const CarLatticeQue
     const CarLatticeConfig &cfg = lattice_.config();
     // the body grown by kClearance beyond the search's margin: a curve is taken where it
     // leaves a follower room, not where it grazes an obstacle
-    const Shortcutter::Geometry geo{col_, clothoid_, cfg.turnRadius, cfg.spacing, col_.reach(),
-                                    lattice_.margin() + kClearance, cfg.reverse};
+    // where the query reverses near its ends only (reverse=auto), a route: forward curves,
+    // which leave the manoeuvres' reversed stretches as they are or drive them forwards
+    const bool reeds = cfg.reverse && q.reverseWithin < 0;
+    const Shortcutter::Geometry geo{col_, reeds ? nullptr : clothoid_, cfg.turnRadius, cfg.spacing, col_.reach(),
+                                    lattice_.margin() + kClearance, reeds};
     Shortcutter sc(geo, q, cost, cancelled, maxCurves, rep);
     for (int pass = 0; pass < 2 && !sc.stopped(); ++pass)
         if (!sc.pass(path)) break;

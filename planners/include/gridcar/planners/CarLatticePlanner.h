@@ -48,6 +48,9 @@ public:
     /// the vehicle: the distance its stop and start at a manoeuvring speed cost (see
     /// gearChangeDistance()).
     double cuspPenalty() const;
+    /// How far from the start and the goal the first search reverses (CarLatticeQuery::
+    /// reverseWithin): reverse=auto's zone where the planner reverses, else -1 (everywhere).
+    double reverseWithin() const;
     /// The range the curve heuristic covers (m; 0: off, or no car lattice set up).
     double curveWithin() const;
     /// True if a found path is shortcut as configured (`shortcut`, `reverse`).

@@ -33,6 +33,9 @@ struct FallbackOptions
     /// the start heading given): only then can a search run from the goal back.
     bool fixedEnds{false};
     bool latticeReverses{false};  ///< the first search's primitive set drives backwards
+    /// the first search reversed only near the start and the goal (reverse=auto,
+    /// CarLatticeQuery::reverseWithin): every stage reverses everywhere
+    bool reverseNearEnds{false};
     bool hybrid{false};           ///< the family has the hybrid set (then also at half its cell)
     bool hybridReverses{false};   ///< the hybrid set drives backwards
     bool fine{false};             ///< the hybrid set can be halved (its cell >= 5 cm)
@@ -41,7 +44,9 @@ struct FallbackOptions
 /**
  * @brief The fallback schedule of the car lattice (CarFamily::solve()). Where the first
  * search from the start ends without the goal and was not stopped, the time left goes to, in
- * this order:
+ * this order (every stage reversing wherever its primitive set can):
+ * 0. where the first search reversed only near the start and the goal, the same search
+ *    reversing everywhere (a dead end or a tight corner on the way);
  * 1. the first search again from the goal back to the start (a goal pose met exactly,
  *    reversing);
  * 2. the hybrid set (Hybrid A*'s finer manoeuvres: the lattice's nodes could not make it),

@@ -31,7 +31,8 @@ struct AnalyticShot
  *   30 R + 10 cells at every 8th, and only where the obstacle-aware distance to the goal is not
  *   well above the straight line (something in the way: a nearly straight curve would hit it);
  * - the curve family (shoot()): gridcar's Dubins curves, Reeds-Shepp when the primitive set
- *   reverses (the few shortest words per end yaw near the goal: in a tight spot the shortest one
+ *   reverses and the query lets the state reverse (CarLatticeQuery::reverseWithin: a
+ *   Reeds-Shepp curve then reverses no farther than that) (the few shortest words per end yaw near the goal: in a tight spot the shortest one
  *   is often blocked where a slightly longer one is free), to the goal's yaw (within its
  *   tolerance: the yaw and both ends of the tolerance), or with a free goal heading to the
  *   bearing and every lattice heading; with clothoid turns the clothoid turn-straight-turn
@@ -58,7 +59,8 @@ public:
     AnalyticExpansion(const CarCollision &collision, const CarLattice &lattice);
     ~AnalyticExpansion();
 
-    /// The lattice's clothoid turns (null: arcs, or a reversing lattice).
+    /// The lattice's clothoid turns (null: arcs); the shots forwards use them, the Reeds-Shepp
+    /// ones do not.
     const ClothoidTurn *clothoidTurns() const { return clothoid_.get(); }
 
     /// Whether to try from world pose @p from towards @p goal at the search's @p expansions

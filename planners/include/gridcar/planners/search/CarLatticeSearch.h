@@ -86,6 +86,19 @@ struct CarLatticeQuery : CarGoalTerms
     /// into a tight spot is a manoeuvre out of it read backwards, and getting out is what a
     /// search finds quickly (few ways lead in; from inside, the first free motion leads out).
     bool timeReversed{false};
+    /// Where a reversing lattice may drive backwards: from states within this many metres of
+    /// the start or the goal position (manoeuvres: turning round, parking, leaving a dead end),
+    /// and by analytic curves that start there and reverse no farther than this; < 0:
+    /// everywhere (reverse=auto resolves it; reverse=on and the fallback searches leave it < 0).
+    double reverseWithin{-1.0};
+    /// True if a state at world pose @p p may set off backwards (reverseWithin).
+    bool mayReverseAt(const Pose2 &p) const
+    {
+        if (reverseWithin < 0) return true;
+        const double r2 = reverseWithin * reverseWithin;
+        const auto d2 = [&p](const Pose2 &e) { return (p.x - e.x) * (p.x - e.x) + (p.y - e.y) * (p.y - e.y); };
+        return d2(start) <= r2 || d2(goal) <= r2;
+    }
     /// Cost (>= 0, the cost model's unit; settings.cuspPenalty resolved and converted) of a gear change: between a state reached forwards
     /// and a motion backwards, or the other way, and at every cusp of the analytic expansion.
     double cuspPenalty{0.0};

@@ -49,7 +49,14 @@ struct CarLatticeSettings
 {
     int headings{16};                ///< `headings`: 8 or 16
     double heuristicWeight{1.1};     ///< `heuristic_weight`, >= 1 (weighted A*)
-    AutoSwitch reverse{AutoSwitch::Off};  ///< `reverse`: off, on, auto (on but on a Dubins space)
+    /// `reverse`: off; on (backwards wherever it pays); auto (forwards only on a Dubins space,
+    /// else backwards within reverseZone of the start and the goal, where manoeuvres are, and
+    /// everywhere only if that finds no path: FallbackSchedule)
+    AutoSwitch reverse{AutoSwitch::Auto};
+    /// `reverse_zone`, m: with reverse=auto, how far from the start and the goal positions the
+    /// first search may drive backwards; 0: 2 R_min + the vehicle's length (room for a
+    /// three-point turn or a parking manoeuvre)
+    double reverseZone{0.0};
     double reversePenalty{2.0};      ///< `reverse_penalty`: factor on reversed cost, >= 1
     std::optional<double> cuspPenalty;  ///< `cusp_penalty`, m; unset: the vehicle's gearChangeDistance()
     CurveHeuristic curveHeuristic{CurveHeuristic::Off};  ///< `curve_heuristic`
