@@ -127,7 +127,12 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
             r.expanded = h.expanded;
         return ended;
     };
-    if (r.outcome != SearchOutcome::Cancelled) schedule.run(runStage, [&] { return r.exact || cancelled(); });
+    // the fallbacks run only where a path may exist (FootprintChecker::reachability())
+    std::string proven;
+    bool startShutIn = false;
+    if (r.outcome == SearchOutcome::Exhausted && !r.exact && r.unreachable.empty() && !schedule.stages().empty())
+        proven = CarLatticeSearch::provenUnreachable(q, startShutIn);
+    if (r.outcome != SearchOutcome::Cancelled && r.unreachable.empty() && proven.empty()) schedule.run(runStage, [&] { return r.exact || cancelled(); });
     // what the lattice's few headings and coarse cells leave over, taken off by free curves
     if (r.exact && post.shortcutCurves > 0)
     {
@@ -144,6 +149,13 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     // no path and not stopped: the vehicle fits at no lattice heading at the start
     run.end.noPath = ompl::base::PlannerStatus::INVALID_START;
     run.end.noPathWhy = "the vehicle fits at no lattice heading at the start";
+    if (!r.unreachable.empty())
+    {
+        // (OMPL 1.5 has no status for it: the end whose free space is shut in is invalid)
+        run.end.noPath = r.startShutIn ? ompl::base::PlannerStatus::INVALID_START : ompl::base::PlannerStatus::INVALID_GOAL;
+        run.end.noPathWhy = "the goal is unreachable: " + r.unreachable;
+    }
+    if (!proven.empty()) run.end.approximateWhy = "the goal is unreachable: " + proven;
     if (!r.path.empty()) run.end.path = std::make_shared<ompl::geometric::PathGeometric>(toPath(si, r.path));
     return run;
 }

@@ -92,7 +92,11 @@ ompl::base::PlannerStatus SolverSupport::finish(SearchEnd end)
     {
         if (memoryStopped_) return memoryStatus(false);
         if (end.cancelled) return PlannerStatus::TIMEOUT;
-        if (!end.noPathWhy.empty()) OMPL_ERROR("%s: %s", owner_.getName().c_str(), end.noPathWhy.c_str());
+        if (!end.noPathWhy.empty())
+        {
+            stopReason_ = end.noPathWhy;
+            OMPL_ERROR("%s: %s", owner_.getName().c_str(), end.noPathWhy.c_str());
+        }
         return end.noPath;
     }
     const bool exact = end.reached && end.notExactBecause.empty();
@@ -105,6 +109,11 @@ ompl::base::PlannerStatus SolverSupport::finish(SearchEnd end)
     double dist = 0.0;
     pdef->getGoal()->isSatisfied(end.path->getState(end.path->getStateCount() - 1), &dist);
     pdef->addSolutionPath(end.path, !exact, end.reached ? 0.0 : dist, owner_.getName());
+    if (!end.reached && !end.approximateWhy.empty())
+    {
+        stopReason_ = end.approximateWhy;
+        OMPL_WARN("%s: %s", owner_.getName().c_str(), stopReason_.c_str());
+    }
     if (exact) return PlannerStatus::EXACT_SOLUTION;
     if (end.reached) return PlannerStatus::APPROXIMATE_SOLUTION;
     if (memoryStopped_) return memoryStatus(true);

@@ -134,6 +134,33 @@ public:
     /// discsClearAtEveryYaw() of d_O at the cell of (x, y) (0 off the map), from a bit per cell
     /// kept for it.
     bool discsClearAtEveryYawAt(double x, double y) const;
+    /// What reachability() proved.
+    struct Reach
+    {
+        enum Verdict
+        {
+            Separated,  ///< proven: no motion of the body joins the two poses
+            Joined,     ///< the relaxation joins them (a path may exist, or may not)
+            Unknown     ///< not decided within the cell budget, or nothing to decide it on
+        } verdict{Unknown};
+        int shutEnd{-1};            ///< Separated: the end whose region was run out of (0: a, 1: b)
+        std::size_t shutCells{0};   ///< Separated: that region's cells
+    };
+    /**
+     * @brief Fast failure: whether any continuous motion of the body (forwards, backwards,
+     * turning on the spot or not) could take it from pose @p a to pose @p b, on the map's
+     * cells. A point of the body carries an inscribed disc (the one nearest the reference
+     * point of those provenBlocked() reads); at every free pose the disc is free, so the cell
+     * under that point is not one where a disc is proven blocked, and as the body moves the
+     * point crosses 8-connected such cells. If no 8-connected path of them joins a cell the
+     * point can occupy at @p a to one it can occupy at @p b, no motion joins the poses:
+     * Separated. With @p anyYawA (@p anyYawB) every heading at that position counts (the
+     * cells of the point's circle round it). Two breadth-first searches run in turns from the
+     * two ends, the smaller one first, and stop when one runs out (Separated), they meet
+     * (Joined) or @p maxCells cells were visited (Unknown): a goal shut in a room is proven
+     * unreachable after visiting the room. Unknown for a polygon with no proven disc.
+     */
+    Reach reachability(const Pose2 &a, bool anyYawA, const Pose2 &b, bool anyYawB, std::size_t maxCells) const;
     /// Farthest point of the rectangle from the reference point (m): how far a body point moves
     /// per radian of rotation.
     double reach() const { return reach_; }

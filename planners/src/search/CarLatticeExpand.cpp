@@ -11,6 +11,7 @@
 #include <atomic>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace gridcar
@@ -296,7 +297,12 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         }
     h2d_->reset(i0_, j0_, ni_, nj_, seeds, 0, 0);
     use2d_ = q.aim;
-    if (use2d_ && h2d_->distance(0, 0) == kInf) use2d_ = false;
+    if (use2d_ && h2d_->distance(0, 0) == kInf)
+    {
+        use2d_ = false;
+        out.unreachable = provenUnreachable(q, out.startShutIn);
+        if (!out.unreachable.empty()) return out;
+    }
     states_.clear();
     prim_.clear();
     gear_.clear();
@@ -339,6 +345,26 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     out.path = buildPath(end);
     out.cost = space_.g(end) + (shotFrom_ == end ? shotCost_ : 0.0);
     return out;
+}
+
+std::string CarLatticeSearch::provenUnreachable(const CarLatticeQuery &q, bool &startShutIn)
+{
+    // one goal pose (a GoalState: no region, no tolerance on the position) on gridcar's checker
+    if (!q.map || !q.aim || !q.shoot || q.inGoal) return "";
+    constexpr std::size_t kProofCells = std::size_t(1) << 22;
+    const FootprintChecker::Reach r =
+        q.map->reachability(q.start, q.freeStartHeading, q.goal, q.goalYawTolerance != 0, kProofCells);
+    if (r.verdict != FootprintChecker::Reach::Separated) return "";
+    const double res = q.map->grid().resolution();
+    // (a search from the goal back has its ends swapped)
+    const bool goalShut = (r.shutEnd == 1) != q.timeReversed;
+    startShutIn = !goalShut;
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "no motion of the vehicle joins the start and the goal: the free space round the %s (%.1f m^2 where "
+                  "the vehicle's inscribed disc fits) is shut off from the %s",
+                  goalShut ? "goal" : "start", double(r.shutCells) * res * res, goalShut ? "start" : "goal");
+    return buf;
 }
 
 double CarLatticeSearch::heuristicAt(int i, int j)

@@ -35,6 +35,9 @@ struct SearchEnd
     ompl::base::PlannerStatus::StatusType noPath{ompl::base::PlannerStatus::TIMEOUT};
     /// Logged as an error when noPath is returned (empty: nothing logged).
     std::string noPathWhy;
+    /// Non-empty: why the path (not reaching the goal) is all there is (the goal proven
+    /// unreachable): logged, and the stop reason.
+    std::string approximateWhy;
 };
 
 /**

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace gridcar
@@ -184,6 +185,10 @@ struct CarLatticeResult
     std::size_t states{0};      ///< lattice states generated
     std::size_t heuristicNodes{0};  ///< 2D nodes the obstacle-aware heuristic closed
     int shotsTried{0};
+    /// Not empty: the goal was proven unreachable before any search (why, for the user); the
+    /// result then has no path (see CarLatticeSearch: fast failure).
+    std::string unreachable;
+    bool startShutIn{false};  ///< unreachable: the start's free space is the one shut off (else the goal's)
 };
 
 /**
@@ -202,6 +207,12 @@ struct CarLatticeResult
  * the 2D graph does not join start and goal, the Euclidean part alone is used, so the search
  * still returns the explored state nearest the goal (an approximate solution) rather than
  * trusting a relaxation to prove the goal unreachable.
+ * Fast failure: where the 2D graph does not join start and goal and the goal is one pose
+ * (a GoalState) on gridcar's checker, FootprintChecker::reachability() (the body's inscribed
+ * disc over 8-connected cells, a proof for any motion, forwards or backwards, at any
+ * resolution) is asked, within 4 M cells; when it proves the ends apart the run returns at once
+ * with CarLatticeResult::unreachable saying why, and the planner runs no fallback search (it
+ * asks the same before its fallbacks when the 2D graph's relaxation joined the ends).
  * Goal: a node passing inGoal, or a free curve of the lattice's family from the node to the
  * goal (AnalyticExpansion: when it is tried, which curves, the free check). Closed states stay
  * closed (each node keeps the primitive it was first expanded with), as in Hybrid A*. A found
@@ -257,6 +268,11 @@ public:
     const ClothoidTurn *clothoidTurns() const { return analytic_->clothoidTurns(); }
     /// The analytic expansion the search tries towards the goal.
     const AnalyticExpansion &analyticExpansion() const { return *analytic_; }
+
+    /// Fast failure (see the class): why the goal of @p q is proven unreachable, or empty
+    /// (@p startShutIn: the start's free space is the one shut off). Asked by run() where the
+    /// 2D graph does not join the ends, and by the planner before its fallback searches.
+    static std::string provenUnreachable(const CarLatticeQuery &q, bool &startShutIn);
 
 private:
     friend struct CarExpander;
