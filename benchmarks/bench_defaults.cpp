@@ -4,7 +4,8 @@
 // yaw the car fits at there), half to a position; corner-astar and improved-astar with their
 // defaults (or with --param). Every exact path is checked independently (checkDrivable: exact
 // FCL at 2 cm, K_max; reversing pieces with the body turned round) and its length compared with
-// the shortest drivable path any of the reference configurations found for the query.
+// the shortest drivable path any of the reference configurations found for the query. Then
+// (--unreachable) seeded goal poses proven cut off from the start: how fast the defaults say so.
 // Output: a Markdown table per area on stdout, progress on stderr. See docs/performance.md.
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/bench/RandomPairs.h"
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -59,6 +61,7 @@ struct Options
     double limit{10.0};
     std::vector<std::string> only, params;
     bool noReferences{false};
+    int unreachable{2};
 };
 
 struct Run
@@ -99,6 +102,47 @@ std::vector<Run> runConfiguration(GridSetup &setup, const NamedConfiguration &c,
         runs.push_back(run);
     }
     return runs;
+}
+
+/// Goal poses the vehicle fits at, seeded, that FootprintChecker::reachability() proves cut off
+/// from @p start in a region of at most 50 000 cells; the defaults answer each (fast failure).
+void unreachableGoals(const Options &o, GridSetup &setup, const Pose2 &start)
+{
+    const OccupancyGrid &g = *setup.grid;
+    std::mt19937 rng(o.seed);
+    std::uniform_real_distribution<double> ux(g.originX(), g.originX() + g.width() * g.resolution()),
+        uy(g.originY(), g.originY() + g.height() * g.resolution()), uyaw(-M_PI, M_PI);
+    std::vector<Pose2> goals;
+    for (int attempt = 0; attempt < 200000 && int(goals.size()) < o.unreachable; ++attempt)
+    {
+        const Pose2 goal{ux(rng), uy(rng), uyaw(rng)};
+        if (!setup.checker->isValid(goal.x, goal.y, goal.yaw)) continue;
+        const FootprintChecker::Reach r = setup.checker->reachability(start, false, goal, false, 50000);
+        if (r.verdict == FootprintChecker::Reach::Separated && r.shutEnd == 1) goals.push_back(goal);
+    }
+    if (goals.empty())
+    {
+        std::printf("\nNo goal pose cut off from the start found (200 000 seeded tries).\n");
+        return;
+    }
+    std::printf("\n%zu seeded goal poses the vehicle fits at, cut off from the first query's start (the proof's own "
+                "region of at most 50 000 cells):\n\n| planner | answered: median / max (ms) | status |\n|---|---|---|\n",
+                goals.size());
+    for (const auto &c : kDefaults)
+    {
+        auto planner = configurePlanner(setup.ss->getSpaceInformation(), {c.first, c.second, true, false});
+        std::vector<double> ms;
+        std::string statuses;
+        for (const Pose2 &goal : goals)
+        {
+            const QueryResult r = runQuery(setup, planner, start, goal, o.limit, false);
+            ms.push_back(1e3 * r.seconds);
+            if (statuses.find(r.status.asString()) == std::string::npos)
+                statuses += (statuses.empty() ? "" : ", ") + r.status.asString();
+        }
+        std::printf("| %s | %.1f / %.1f | %s |\n", configurationLabel(c).c_str(), quantile(ms, 0.5), quantile(ms, 1.0),
+                    statuses.c_str());
+    }
 }
 
 void runArea(const Options &o, const Area &area)
@@ -165,6 +209,7 @@ void runArea(const Options &o, const Area &area)
         row(label + "**", tested[c], cell);
     }
     for (std::size_t c = 0; c < refs.size(); ++c) row("(reference) " + configurationLabel(kReferences[c]), refs[c], "");
+    if (o.unreachable > 0 && !queries.empty()) unreachableGoals(o, setup, queries.front().first);
     std::fflush(stdout);
 }
 }  // namespace
@@ -182,6 +227,10 @@ int main(int argc, char **argv)
     app.add_option("--only", o.only, "areas to run (willow-garage, mit-stata, ut-gdc-2, ut-gdc-3ne, intel-lab, nav2-depot, "
                                      "tsudanuma, campus; default: all)");
     app.add_option("--param", o.params, "NAME=VALUE set on the planners under test (repeatable; not on the references)");
+    app.add_option("--unreachable", o.unreachable,
+                   "goal poses per area proven cut off from the start, answered by the defaults (0: none)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 100));
     app.add_flag("--no-references", o.noReferences, "skip the reference configurations (the ratio is then to the defaults' shortest)");
     CLI11_PARSE(app, argc, argv);
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);

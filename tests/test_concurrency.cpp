@@ -4,7 +4,9 @@
 //   each thread with its own SimpleSetup and planner: the same answers as one thread alone;
 // - a planner's progress properties read from another thread while it solves (what
 //   ompl::tools::Benchmark's progress thread does), and a whole Benchmark run with progress
-//   sampling on, for our planners beside OMPL's.
+//   sampling on, for our planners beside OMPL's;
+// - a distance field's Voronoi diagram, built on first use, asked for by threads at once.
+#include "gridcar/distance/DistanceField.h"
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/spaces/OmplAdapters.h"
@@ -101,6 +103,37 @@ TEST(Concurrency, OneCheckerSharedByPlannersInFourThreadsGivesTheSerialAnswers)
             solved += serial[t][i] > 0;
         }
     EXPECT_GE(solved, int(planners.size() * qs.size()) / 2);
+}
+
+// The distance field's Voronoi diagram is built on first use: threads that ask for it at once
+// on a shared field see one diagram, the one a field built alone gives.
+TEST(Concurrency, TheVoronoiDiagramBuiltOnFirstUseIsOneForEveryThread)
+{
+    OccupancyGrid g(120, 80, 0.1);
+    for (int c = 10; c < 110; ++c)
+    {
+        g.set(c, 20, CellState::Occupied);
+        g.set(c, 60, CellState::Occupied);
+    }
+    const DistanceField alone(g);
+    const std::size_t expected = alone.voronoiCellCount();
+    const double expectedAt = alone.cellVoronoiDistance(60, 30);
+    const DistanceField shared(g);
+    std::vector<std::size_t> counts(4);
+    std::vector<double> at(4);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+        threads.emplace_back([&, t] {
+            at[std::size_t(t)] = shared.cellVoronoiDistance(60, 30);
+            counts[std::size_t(t)] = shared.voronoiCellCount();
+        });
+    for (auto &th : threads) th.join();
+    ASSERT_GT(expected, 0u);
+    for (int t = 0; t < 4; ++t)
+    {
+        EXPECT_EQ(counts[std::size_t(t)], expected);
+        EXPECT_EQ(at[std::size_t(t)], expectedAt);
+    }
 }
 
 TEST(Concurrency, ProgressPropertiesMayBeReadWhileThePlannerSolves)

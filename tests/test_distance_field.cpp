@@ -62,6 +62,21 @@ TEST(DistanceField, ExactAgainstBruteForceOnRandomGrids)
         }
 }
 
+// A map of 1.2 M cells: the transform shares its columns and rows among threads; cells
+// sampled across the whole map, the border rows and columns among them, against brute force.
+TEST(DistanceField, ThreadedTransformOnALargeGridIsExact)
+{
+    const OccupancyGrid g = randomGrid(1200, 1000, 0.0005, 3u, 0.05);
+    const DistanceField f(g);
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> uc(0, g.width() - 1), ur(0, g.height() - 1);
+    for (int k = 0; k < 120; ++k)
+    {
+        const int c = k < 20 ? (k % 2 ? 0 : g.width() - 1) : uc(rng), r = k < 20 ? ur(rng) : k < 40 ? (k % 2 ? 0 : g.height() - 1) : ur(rng);
+        ASSERT_NEAR(f.cellDistance(c, r), bruteForce(g, c, r), 1e-4) << "cell " << c << "," << r;
+    }
+}
+
 TEST(DistanceField, BorderIsAnObstacleAndUnknownFollowsTheGrid)
 {
     OccupancyGrid g(9, 5, 1.0);

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <mutex>
+#include <thread>
 
 namespace gridcar
 {
@@ -80,10 +83,28 @@ struct EdtWorkspace
     std::vector<int> nearRow, nearCol, tmp;
 };
 
+/// Runs @p part(begin, end) over [0, n) split among the machine's threads (up to 4) where n
+/// items of @p work each make it worth it, else at once on this thread.
+template <class Part>
+void parallelRanges(int n, std::size_t work, const Part &part)
+{
+    const unsigned hw = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
+    const int parts = work < (std::size_t(1) << 20) ? 1 : int(std::min<unsigned>(hw, unsigned(std::max(1, n))));
+    if (parts <= 1)
+    {
+        part(0, n);
+        return;
+    }
+    std::vector<std::thread> threads;
+    for (int k = 1; k < parts; ++k) threads.emplace_back(part, n * k / parts, n * (k + 1) / parts);
+    part(0, n / parts);
+    for (std::thread &t : threads) t.join();
+}
+
 /// Exact 2D EDT of a site mask over a W x H grid, in metres (cells * res) into @p out. With
 /// @p borderSites the ring just outside the grid is made of sites too. With @p wantNearest the
 /// workspace's nearCol / nearRow hold each cell's nearest site afterwards (-1 / W / H for
-/// border sites); otherwise they are scratch.
+/// border sites); otherwise they are scratch. Columns, then rows, are shared among threads.
 void edt2d(const std::vector<std::uint8_t> &site, int W, int H, bool borderSites, double res,
            std::vector<float> &out, EdtWorkspace &ws, bool wantNearest)
 {
@@ -91,58 +112,63 @@ void edt2d(const std::vector<std::uint8_t> &site, int W, int H, bool borderSites
     std::vector<int> &nearRow = ws.nearRow, &nearCol = ws.nearCol;
     nearRow.resize(N);
     const int none = 1 << 29;
-    // column pass, row-major friendly: forward and backward sweeps keep the last site per column
-    std::vector<int> last(std::size_t(W), borderSites ? -1 : -none);
-    for (int r = 0; r < H; ++r)
-    {
-        const std::uint8_t *srow = site.data() + std::size_t(r) * W;
-        int *nrow = nearRow.data() + std::size_t(r) * W;
-        for (int c = 0; c < W; ++c)
+    // column pass, row-major friendly: forward and backward sweeps keep the last site per
+    // column (each thread its own band of columns)
+    parallelRanges(W, N, [&](int c0, int c1) {
+        std::vector<int> last(std::size_t(W), borderSites ? -1 : -none);
+        for (int r = 0; r < H; ++r)
         {
-            if (srow[c]) last[std::size_t(c)] = r;
-            nrow[c] = last[std::size_t(c)];
+            const std::uint8_t *srow = site.data() + std::size_t(r) * W;
+            int *nrow = nearRow.data() + std::size_t(r) * W;
+            for (int c = c0; c < c1; ++c)
+            {
+                if (srow[c]) last[std::size_t(c)] = r;
+                nrow[c] = last[std::size_t(c)];
+            }
         }
-    }
-    std::fill(last.begin(), last.end(), borderSites ? H : none);
-    for (int r = H - 1; r >= 0; --r)
-    {
-        const std::uint8_t *srow = site.data() + std::size_t(r) * W;
-        int *nrow = nearRow.data() + std::size_t(r) * W;
-        for (int c = 0; c < W; ++c)
+        std::fill(last.begin(), last.end(), borderSites ? H : none);
+        for (int r = H - 1; r >= 0; --r)
         {
-            if (srow[c]) last[std::size_t(c)] = r;
-            const int down = last[std::size_t(c)];
-            if (down - r < r - nrow[c]) nrow[c] = down;
+            const std::uint8_t *srow = site.data() + std::size_t(r) * W;
+            int *nrow = nearRow.data() + std::size_t(r) * W;
+            for (int c = c0; c < c1; ++c)
+            {
+                if (srow[c]) last[std::size_t(c)] = r;
+                const int down = last[std::size_t(c)];
+                if (down - r < r - nrow[c]) nrow[c] = down;
+            }
         }
-    }
-    // row pass: FH envelope over W (+2 border sites at -1 and W)
-    const int n = W + 2;
-    std::vector<std::int64_t> f(static_cast<std::size_t>(n)), d(static_cast<std::size_t>(n));
-    std::vector<int> arg(static_cast<std::size_t>(n));
-    Envelope env;
-    env.resize(n);
+    });
+    // row pass: FH envelope over W (+2 border sites at -1 and W), each thread its own rows
     out.resize(N);
     if (wantNearest) nearCol.resize(N);
-    for (int r = 0; r < H; ++r)
-    {
-        f[0] = borderSites ? 0 : kInf;
-        f[std::size_t(n) - 1] = borderSites ? 0 : kInf;
-        const int *nrow = nearRow.data() + std::size_t(r) * W;
-        for (int c = 0; c < W; ++c)
+    parallelRanges(H, N, [&](int r0, int r1) {
+        const int n = W + 2;
+        std::vector<std::int64_t> f(static_cast<std::size_t>(n)), d(static_cast<std::size_t>(n));
+        std::vector<int> arg(static_cast<std::size_t>(n));
+        Envelope env;
+        env.resize(n);
+        for (int r = r0; r < r1; ++r)
         {
-            const std::int64_t dy = std::int64_t(nrow[c]) - r;
-            f[std::size_t(c) + 1] = std::abs(dy) >= (1 << 28) ? kInf : dy * dy;
+            f[0] = borderSites ? 0 : kInf;
+            f[std::size_t(n) - 1] = borderSites ? 0 : kInf;
+            const int *nrow = nearRow.data() + std::size_t(r) * W;
+            for (int c = 0; c < W; ++c)
+            {
+                const std::int64_t dy = std::int64_t(nrow[c]) - r;
+                f[std::size_t(c) + 1] = std::abs(dy) >= (1 << 28) ? kInf : dy * dy;
+            }
+            env.run(f.data(), n, d.data(), arg.data());
+            float *orow = out.data() + std::size_t(r) * W;
+            for (int c = 0; c < W; ++c)
+            {
+                const std::int64_t v = d[std::size_t(c) + 1];
+                orow[c] = v >= kInf ? std::numeric_limits<float>::infinity() : float(std::sqrt(double(v)) * res);
+            }
+            if (wantNearest)
+                for (int c = 0; c < W; ++c) nearCol[std::size_t(r) * W + c] = arg[std::size_t(c) + 1] - 1;
         }
-        env.run(f.data(), n, d.data(), arg.data());
-        float *orow = out.data() + std::size_t(r) * W;
-        for (int c = 0; c < W; ++c)
-        {
-            const std::int64_t v = d[std::size_t(c) + 1];
-            orow[c] = v >= kInf ? std::numeric_limits<float>::infinity() : float(std::sqrt(double(v)) * res);
-        }
-        if (wantNearest)
-            for (int c = 0; c < W; ++c) nearCol[std::size_t(r) * W + c] = arg[std::size_t(c) + 1] - 1;
-    }
+    });
     if (!wantNearest) return;
     // resolve the nearest row for each cell from the column pass of its nearest column
     ws.tmp.resize(N);
@@ -170,10 +196,28 @@ DistanceField::DistanceField(const OccupancyGrid &grid)
     std::vector<std::uint8_t> blocked(N);
     for (int r = 0; r < H; ++r)
         for (int c = 0; c < W; ++c) blocked[std::size_t(r) * W + c] = grid.isBlocked(c, r) ? 1 : 0;
-
     EdtWorkspace ws;
-    edt2d(blocked, W, H, true, resolution_, dist_, ws, true);
+    edt2d(blocked, W, H, true, resolution_, dist_, ws, false);
     for (std::size_t i = 0; i < N; ++i) maxDist_ = std::max(maxDist_, double(dist_[i]));
+}
+
+void DistanceField::voronoiReady() const
+{
+    std::call_once(voronoiOnce_, [this] { buildVoronoi(); });
+}
+
+void DistanceField::buildVoronoi() const
+{
+    const int W = width_, H = height_;
+    const std::size_t N = std::size_t(W) * H;
+    if (N == 0) return;
+    // the blocked cells are those at distance 0 (a free cell is at least a cell from one)
+    std::vector<std::uint8_t> blocked(N);
+    for (std::size_t i = 0; i < N; ++i) blocked[i] = dist_[i] > 0.0f ? 0 : 1;
+    // the transform again, for each cell's nearest obstacle cell
+    EdtWorkspace ws;
+    std::vector<float> again;
+    edt2d(blocked, W, H, true, resolution_, again, ws, true);
 
     // ---- generalized Voronoi diagram: 4-neighbours whose nearest obstacles lie on opposite
     // sides (cell -> obstacle vectors more than 90 degrees apart) and are not next to each other

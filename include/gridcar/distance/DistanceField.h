@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 namespace gridcar
@@ -25,7 +26,8 @@ struct VoronoiFieldParams
  * free). The map border counts as an obstacle: a ring of blocked cells just outside the map.
  * Blocked cells have d_O = 0. The transform is Felzenszwalb & Huttenlocher's lower envelope of
  * parabolas ("Distance Transforms of Sampled Functions", 2012), linear in the number of cells,
- * after a linear column pass; it also records each cell's nearest obstacle cell.
+ * after a linear column pass, the columns and then the rows shared among up to 4 threads on a
+ * large map (1 M cells and more).
  *
  * The generalized Voronoi diagram (GVD) is the set of free cells where the nearest obstacle
  * changes between 4-neighbours in a way that is not a step along one wall: either the two
@@ -51,7 +53,8 @@ public:
     /// Cells whose nearest obstacles are farther apart than this (in cells) mark the GVD.
     static constexpr double voronoiSeparationCells = 3.0;
 
-    /// Computes both fields for @p grid (the grid is copied by reference into metadata only).
+    /// Computes d_O for @p grid (the grid is copied by reference into metadata only); the GVD
+    /// and d_V on first use.
     explicit DistanceField(const OccupancyGrid &grid);
 
     int width() const { return width_; }
@@ -66,11 +69,20 @@ public:
     /// d_V at cell centre, metres (+inf if there is no GVD; +inf off the map).
     double cellVoronoiDistance(int col, int row) const
     {
-        return (col < 0 || row < 0 || col >= width_ || row >= height_) ? std::numeric_limits<double>::infinity() :
-                                                                          double(vdist_[idx(col, row)]);
+        if (col < 0 || row < 0 || col >= width_ || row >= height_) return std::numeric_limits<double>::infinity();
+        voronoiReady();
+        return double(vdist_[idx(col, row)]);
     }
-    bool isVoronoi(int col, int row) const { return voronoi_[idx(col, row)] != 0; }
-    std::size_t voronoiCellCount() const { return voronoiCount_; }
+    bool isVoronoi(int col, int row) const
+    {
+        voronoiReady();
+        return voronoi_[idx(col, row)] != 0;
+    }
+    std::size_t voronoiCellCount() const
+    {
+        voronoiReady();
+        return voronoiCount_;
+    }
     /// Largest d_O over the map, metres.
     double maxDistance() const { return maxDist_; }
 
@@ -97,10 +109,16 @@ private:
     double resolution_{1.0};
     double originX_{0}, originY_{0};
     double maxDist_{0};
-    std::size_t voronoiCount_{0};
     std::vector<float> dist_;            ///< d_O per cell, metres
-    std::vector<float> vdist_;           ///< d_V per cell, metres
-    std::vector<std::uint8_t> voronoi_;  ///< 1 on GVD cells
+    /// The GVD and d_V are built on first use (voronoiReady(): once, whichever thread asks
+    /// first): only paper I's Voronoi cost and the map picture read them, and on a 24 M-cell
+    /// map they cost more than d_O itself.
+    void voronoiReady() const;
+    void buildVoronoi() const;
+    mutable std::once_flag voronoiOnce_;
+    mutable std::size_t voronoiCount_{0};
+    mutable std::vector<float> vdist_;           ///< d_V per cell, metres
+    mutable std::vector<std::uint8_t> voronoi_;  ///< 1 on GVD cells
 };
 
 }  // namespace gridcar
