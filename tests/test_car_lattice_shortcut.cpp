@@ -199,7 +199,7 @@ TEST(CarLatticeSearch, ShortcutParameterModes)
     ASSERT_TRUE(planner);
     auto &params = planner->params();
     EXPECT_EQ(planner->carSettings().shortcut, AutoSwitch::Auto);
-    EXPECT_TRUE(planner->shortcutting());  // reverse=auto reverses here (not a Dubins space)
+    EXPECT_FALSE(planner->shortcutting());  // reverse=auto: routes forwards, as the forward lattice's
     ASSERT_TRUE(params.setParam("reverse", "off"));
     EXPECT_FALSE(planner->shortcutting());
     ASSERT_TRUE(params.setParam("reverse", "on"));

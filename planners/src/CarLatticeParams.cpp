@@ -100,7 +100,7 @@ std::vector<Field> makeFields()
                  },
                  [](const S &s) { return std::string(word(s.turns)); }});
     f.push_back(autoSwitch("shortcut", &S::shortcut, "auto, on (1, true) or off (0, false)",
-                           "a found path shortcut by free analytic curves: auto (on when reversing), on, off"));
+                           "a found path shortcut by free analytic curves: auto (on with reverse=on), on, off"));
     return f;
 }
 }  // namespace

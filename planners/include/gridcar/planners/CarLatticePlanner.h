@@ -53,10 +53,12 @@ public:
     double reverseWithin() const;
     /// The range the curve heuristic covers (m; 0: off, or no car lattice set up).
     double curveWithin() const;
-    /// True if a found path is shortcut as configured (`shortcut`, `reverse`).
+    /// True if a found path is shortcut as configured (`shortcut`; auto: with `reverse=on`, a
+    /// lattice reversing everywhere, not with reverse=auto's routes).
     bool shortcutting() const
     {
-        return settings_.shortcut == AutoSwitch::On || (settings_.shortcut == AutoSwitch::Auto && reversing());
+        return settings_.shortcut == AutoSwitch::On ||
+               (settings_.shortcut == AutoSwitch::Auto && reversing() && settings_.reverse == AutoSwitch::On);
     }
     /// The curvature rate the lattice's paths keep (1/m^2; 0: not smoothed).
     double curvatureRate() const;

@@ -74,7 +74,7 @@ struct CarLatticeSettings
     double clearance{0.0};
     TurnShape turns{TurnShape::Auto};  ///< `turns`
     /// `shortcut`: a found path shortened by the analytic expansion's curves where they are
-    /// free, shorter and cheaper (auto: on when the lattice reverses)
+    /// free, shorter and cheaper (auto: on with reverse=on)
     AutoSwitch shortcut{AutoSwitch::Auto};
 
     /// The settings of a query built by hand on the search alone: unweighted A*, no penalty on
