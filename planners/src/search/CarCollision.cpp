@@ -99,6 +99,10 @@ SpaceCollision::SpaceCollision(ompl::base::SpaceInformationPtr si) : si_(std::mo
         throw std::invalid_argument("the car lattice needs a state space derived from ompl::base::SE2StateSpace");
     scratch_ = si_->allocState();
     scratchB_ = si_->allocState();
+    const auto &b = si_->getStateSpace()->as<ompl::base::SE2StateSpace>()->getBounds();
+    boundsLow_ = {b.low[0], b.low[1]};
+    boundsHigh_ = {b.high[0], b.high[1]};
+    boundsMargin_ = std::min(0.01, 1e-3 * std::hypot(b.high[0] - b.low[0], b.high[1] - b.low[1]));
 }
 
 SpaceCollision::~SpaceCollision()
@@ -122,6 +126,13 @@ std::array<double, 4> SpaceCollision::extent() const
 
 bool SpaceCollision::poseFree(const Pose2 &p) const
 {
+    // a little inside the space's bounds (a thousandth of their diagonal, at most 1 cm): a path
+    // along a bound is otherwise interpolated just outside it by OMPL's simplifier, whose repair
+    // (PathGeometric::checkAndRepair(), OMPL 1.5) then samples near that state with bounds the
+    // wrong way round and aborts on an assertion
+    if (!(p.x >= boundsLow_[0] + boundsMargin_ && p.x <= boundsHigh_[0] - boundsMargin_ &&
+          p.y >= boundsLow_[1] + boundsMargin_ && p.y <= boundsHigh_[1] - boundsMargin_))
+        return false;
     auto *s = scratch_->as<ompl::base::SE2StateSpace::StateType>();
     s->setXY(p.x, p.y);
     s->setYaw(wrapYaw(p.yaw));

@@ -161,7 +161,7 @@ bool FootprintCollision::curveFreeOriented(const Pose2 &from, int n, PoseAt &&po
 
 /**
  * Any OMPL SpaceInformation over an SE(2)-derived space: validity is `si->isValid()` (bounds
- * included) at every pose, so a curve is as safe as the checker at the lattice's spacing. The
+ * included, and a thousandth of their diagonal, at most 1 cm, inside them) at every pose, so a curve is as safe as the checker at the lattice's spacing. The
  * heuristic's axis test asks the checker at the node lined up with the step (either way): not a
  * proven relaxation for an unknown body, so the path is near-optimal rather than bounded.
  */
@@ -188,6 +188,8 @@ private:
     ompl::base::State *scratch_;
     ompl::base::State *scratchB_;
     std::vector<double> yaws_;
+    std::array<double, 2> boundsLow_{}, boundsHigh_{};
+    double boundsMargin_{0.0};  ///< poses keep this far inside the bounds (see poseFree())
 };
 
 }  // namespace gridcar
