@@ -24,11 +24,11 @@ run_gridcar(0 drive ${Q} --planner corner-astar --scenario "${WORK}/ped.yaml" --
 expect_in("${OUT}" "\"outcome\":\"reached\"")
 
 # a given path
-run_gridcar(0 plan ${Q} --planner astar-euclidean --out "${WORK}/p.csv")
+run_gridcar(0 plan ${Q} --planner astar-euclidean --out "${WORK}/p.csv" --allow-undrivable)
 run_gridcar(0 drive --map "${WORK}/campus.yaml" --vehicle paper-c-robot --path "${WORK}/p.csv")
 expect_in("${OUT}" "reached")
 # the same path as JSON with radians, driven with the vehicle from a parameters file
-run_gridcar(0 plan ${Q} --planner astar-euclidean --out "${WORK}/p.json" --angle-unit rad)
+run_gridcar(0 plan ${Q} --planner astar-euclidean --out "${WORK}/p.json" --angle-unit rad --allow-undrivable)
 file(WRITE "${WORK}/robot.yaml" "vehicle: paper-c-robot\n")
 run_gridcar(0 drive --map "${WORK}/campus.yaml" --params-file "${WORK}/robot.yaml" --path "${WORK}/p.json" --json)
 expect_in("${OUT}" "\"outcome\":\"reached\"")

@@ -46,8 +46,21 @@ run_gridcar(2 plan ${M} --planner rrtconnect --start 0.5,5.5 --goal 11.5,0.5 --p
 expect_in("${ERR}" "parameter range=abc not accepted")
 
 # a grid-cell search on a car space is told that it ignores the curves
-run_gridcar(0 plan --map embedded --planner astar-octile --vehicle paper-c-car --space reeds-shepp --start 504.365,384.271 --goal 587.805,345.829)
+run_gridcar(0 plan --map embedded --planner astar-octile --vehicle paper-c-car --space reeds-shepp --start 504.365,384.271 --goal 587.805,345.829 --allow-undrivable)
 expect_in("${ERR}" "warning: astar-octile searches the map's cells in straight steps: on --space reeds-shepp")
+# an exact path the independent check finds not drivable (the grid path's corners): exit 4 by
+# default, with the reason and the flag that exits 0
+run_gridcar(4 plan --map embedded --planner astar-octile --vehicle paper-c-car --start 504.365,384.271 --goal 587.805,345.829)
+expect_in("${ERR}" "the path is NOT drivable (curvature")
+expect_in("${ERR}" "--allow-undrivable")
+run_gridcar(0 plan --map embedded --planner corner-astar --vehicle paper-c-car --start 504.365,384.271 --goal 587.805,345.829)
+# --json: one JSON object on stdout whatever happens, a missing map too
+run_gridcar(2 plan --map "${WORK}/none.yaml" --planner corner-astar --start 0,0 --goal 1,1 --json)
+expect_in("${OUT}" "\"status\":\"Invalid input\"")
+expect_in("${OUT}" "none.yaml")
+# a goal off the map: the map's extent in the message
+run_gridcar(2 plan ${M} --planner astar-octile --start-cell 0,0 --goal 50,50)
+expect_in("${ERR}" "outside the map, which spans x 0.000..12.000 m, y 0.000..6.000 m")
 
 # --row-order bottom counts rows from the map origin's row (ROS): cell (0,5) bottom = (0,0) top
 run_gridcar(0 plan ${M} --planner astar-octile --start-cell 0,5 --goal-cell 11,0 --row-order bottom --json)

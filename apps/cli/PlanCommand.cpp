@@ -6,12 +6,15 @@
 #include "gridcar/path/PathIO.h"
 
 #include <ompl/util/Console.h>
+#include <ompl/util/Exception.h>
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 
 namespace gridcar::cli
 {
@@ -24,13 +27,33 @@ struct PlanOptions
     std::string outCsv;
     std::string angleUnit{"deg"};
     std::string png;
+    bool allowUndrivable{false};
 };
 
-nlohmann::json resultJson(const QueryResult &q, const VehicleParams &vehicle)
+/// How far the path's end is from the goal (m), and its heading from the goal's (deg, < 0:
+/// no goal heading given).
+std::pair<double, double> goalError(const QueryResult &q, const Query &query)
 {
+    if (q.path.empty()) return {NAN, -1.0};
+    const Pose2 &e = q.path.back();
+    const double d = std::hypot(e.x - query.goal.x, e.y - query.goal.y);
+    const double h = query.goalYaw ? std::abs(std::remainder(e.yaw - query.goal.yaw, 2 * M_PI)) * 180.0 / M_PI : -1.0;
+    return {d, h};
+}
+
+nlohmann::json resultJson(const QueryResult &q, const Query &query)
+{
+    const VehicleParams &vehicle = query.vehicle;
     const PathMetrics &m = q.metrics;
     nlohmann::json j;
     j["status"] = q.status.asString();
+    if (!q.path.empty() && q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
+    {
+        // an approximate answer: how far from the goal it ends
+        const auto [d, h] = goalError(q, query);
+        j["goal_distance"] = d;
+        if (h >= 0) j["goal_heading_error_deg"] = h;
+    }
     j["cost"] = q.cost;
     j["length"] = m.length;
     j["expanded"] = q.expanded;
@@ -61,10 +84,17 @@ nlohmann::json resultJson(const QueryResult &q, const VehicleParams &vehicle)
     return j;
 }
 
-void printResult(const std::string &planner, const QueryResult &q)
+void printResult(const std::string &planner, const QueryResult &q, const Query &query)
 {
     const PathMetrics &m = q.metrics;
     std::printf("%s: %s in %.3f s", planner.c_str(), q.status.asString().c_str(), q.seconds);
+    if (!q.path.empty() && q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
+    {
+        const auto [d, h] = goalError(q, query);
+        std::printf(" (ends %.2f m from the goal", d);
+        if (h >= 0) std::printf(", heading %.1f deg off", h);
+        std::printf(")");
+    }
     if (q.smoothed) std::printf(" (smoothing %.4f s)", q.smoothingSeconds);
     if (!q.notExactBecause.empty()) std::printf(" (%s)", q.notExactBecause.c_str());
     std::printf("\n  length %.2f m, cost %.2f, %d poses, %d turns, max turn %.1f deg, max curvature %.3f 1/m, "
@@ -104,11 +134,34 @@ void drawPlan(const std::string &png, const Query &query, const ompl::base::Plan
     bench::drawFigure(*query.grid, fig, png, "plan");
 }
 
+int planAndReport(const PlanOptions &o, bool &printed);
+
 int runPlan(const PlanOptions &o)
 {
     if (!o.outCsv.empty() && pathFormatOf(o.outCsv).empty())
         throw InputError("--out " + o.outCsv + ": the path file must end in .csv, .yaml, .yml or .json");
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    // with --json, one JSON object on stdout whatever happens (a bad input too)
+    bool printed = false;
+    try
+    {
+        return planAndReport(o, printed);
+    }
+    catch (const std::exception &e)
+    {
+        // (the exception goes on to main(): its message on stderr, its exit status)
+        const bool bad = dynamic_cast<const InputError *>(&e) || dynamic_cast<const MapLoadError *>(&e) ||
+                         dynamic_cast<const std::invalid_argument *>(&e) || dynamic_cast<const ompl::Exception *>(&e);
+        if (o.json && !printed)
+            std::cout << nlohmann::json{{"planner", o.query.planner}, {"status", bad ? "Invalid input" : "Internal error"}, {"error", e.what()}}
+                             .dump()
+                      << "\n";
+        throw;
+    }
+}
+
+int planAndReport(const PlanOptions &o, bool &printed)
+{
     Query query = loadQuery(o.query, true);
     const ompl::base::PlannerPtr planner = queryPlanner(o.query, query);
     // the same checks for every planner (OMPL's own planners do not all check the goal)
@@ -119,20 +172,32 @@ int runPlan(const PlanOptions &o)
         const std::string msg = what + " " + describe(pose) + " is " + why;
         if (o.json)
             std::cout << nlohmann::json{{"planner", o.query.planner}, {"status", "Invalid " + what}, {"error", msg}}.dump() << "\n";
+        printed = o.json;
         throw InputError(msg);
     }
     const QueryResult q = runQuery(query.setup, planner, query.start, query.goal, o.query.timeLimit, !query.goalYaw);
     if (o.json)
     {
-        nlohmann::json j = resultJson(q, query.vehicle);
+        nlohmann::json j = resultJson(q, query);
         j["planner"] = o.query.planner;
         std::cout << j.dump() << "\n";
+        printed = true;
     }
     else
-        printResult(o.query.planner, q);
+        printResult(o.query.planner, q, query);
     if (!o.outCsv.empty()) writePath(o.outCsv, q.path, o.angleUnit == "rad" ? AngleUnit::Radians : AngleUnit::Degrees);
     if (!o.png.empty()) drawPlan(o.png, query, *planner, q, o.query.planner);
-    return q.status == ompl::base::PlannerStatus::EXACT_SOLUTION ? 0 : 3;
+    if (q.status != ompl::base::PlannerStatus::EXACT_SOLUTION) return 3;
+    // an exact solution the independent check finds undrivable is not a plan to drive
+    if (!q.drivability.drivable && !o.allowUndrivable)
+    {
+        std::fprintf(stderr,
+                     "gridcar: the path is NOT drivable (%s): exit 4 (--allow-undrivable exits 0 for an exact solution "
+                     "whatever the check says; the car-lattice planners corner-astar and improved-astar plan drivable paths)\n",
+                     q.drivability.reason.c_str());
+        return 4;
+    }
+    return 0;
 }
 }  // namespace
 
@@ -146,8 +211,9 @@ Command addPlanCommand(CLI::App &app)
                 "max_curvature_rate (1/m^2, fastest change of curvature), curvature_rate_limit (the vehicle's), "
                 "within_curvature_rate, cusps, "
                 "min_path_distance, smoothing_time, min_clearance, time, drivable (and not_drivable_because), not_exact_because "
-                "(a grid planner stopped at its memory bound), "
-                "path [[x, y, yaw_rad], ...]");
+                "(a grid planner stopped at its memory bound, a goal proven unreachable), goal_distance and "
+                "goal_heading_error_deg (an approximate path's end), "
+                "path [[x, y, yaw_rad], ...]; on bad input {planner, status, error}");
     c->add_option("--out", o->outCsv,
                   "Write the path, the format from the extension: .csv (header x,y,yaw_deg), .yaml / .yml or .json "
                   "({frame_id: map, angle_unit: deg, poses: [{x, y, yaw}]}); x, y in metres in the map frame");
@@ -158,8 +224,15 @@ Command addPlanCommand(CLI::App &app)
                                    "bar and a legend; the path with the vehicle's outline along it (reverse segments in "
                                    "purple), before smoothing in orange, the cells the planner explored in light blue; "
                                    "start black, goal magenta as in gridcar bench");
-    c->footer("Exit status: 0 exact solution, 3 no exact solution (timeout / approximate), 2 bad input (including a start "
-              "or goal off the map or in collision), 1 internal error.");
+    c->add_flag("--allow-undrivable", o->allowUndrivable,
+                "Exit 0 for an exact solution even when the independent check finds the path not drivable (default: "
+                "exit 4)");
+    c->footer("Exit status: 0 exact solution (and drivable: full body free at 2 cm steps, curvature within K_max), 4 "
+              "exact solution that the check finds NOT drivable (a grid search's or a sampling planner's path on the se2 "
+              "space; --allow-undrivable exits 0), 3 no exact solution (timeout / approximate / goal proven "
+              "unreachable; the path's end is given as its distance and heading from the goal), 2 bad input "
+              "(including a start or goal off the map or in collision; with --json one JSON object with status and "
+              "error), 1 internal error.");
     return {c, [o] {
                 applyParamsFile(o->query, true);
                 return runPlan(*o);
