@@ -26,6 +26,7 @@ Command addGenmapCommand(CLI::App &app);
 Command addDemoCommand(CLI::App &app);
 Command addVehicleCommand(CLI::App &app);
 Command addPlanCommand(CLI::App &app);
+Command addPlannersCommand(CLI::App &app);
 Command addScenCommand(CLI::App &app);
 Command addDriveCommand(CLI::App &app);
 Command addBenchCommand(CLI::App &app);

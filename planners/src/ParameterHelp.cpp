@@ -1,0 +1,57 @@
+/// @file ParameterHelp.cpp
+/// @brief parameterHelp(): the settings tables' lines, then the parameters declared one by one.
+#include "gridcar/planners/ParameterHelp.h"
+
+#include "gridcar/planners/CarLatticeParams.h"
+#include "gridcar/planners/CornerWeights.h"
+#include "gridcar/planners/ImprovedAStar.h"
+
+#include <map>
+
+namespace gridcar
+{
+namespace
+{
+/// The parameters declared one by one (GridPlanner's, the grid planners' and OMPL's common ones).
+const std::map<std::string, std::string> &singles()
+{
+    static const std::map<std::string, std::string> m = {
+        {"free_start_heading", "start at any heading where the vehicle fits (the start state's yaw ignored)"},
+        {"turning_radius", "minimum turning radius, m (0: the vehicle's R_min, or OMPL's Dubins / Reeds-Shepp radius)"},
+        {"max_memory_mb", "the search stops (approximate answer, with the reason) when the process's resident memory passes this, MB"},
+        {"lattice_cell", "cell of the search's lattice, m (0: from the map's resolution and the vehicle)"},
+        {"match_goal_heading", "arrive at a GoalState's yaw (else at any heading where the vehicle fits)"},
+        {"cost", "corner A*'s search cost: corners (length + corner weights) or time (driving time)"},
+        {"allow_corner_cutting", "diagonal moves between two blocked cells' corners allowed"},
+        {"heuristic", "paper I's grid heuristic: euclidean, arc (the turning-arc one) or octile"},
+        {"contour", "paper I's body-contour cost s(n): fcl (exact) or points (the paper's contour points)"},
+        {"smooth", "paper I's post-processing (line of sight, turning points under K_max, Bezier) after the grid search"},
+        // OMPL's common parameters
+        {"range", "OMPL: longest motion added to the tree at once, in the space's distance (0: from the space's extent)"},
+        {"goal_bias", "OMPL: probability of sampling the goal"},
+        {"intermediate_states", "OMPL: keep the states along each motion in the tree"},
+        {"rewire_factor", "OMPL: factor on the rewiring radius / neighbour count"},
+        {"use_k_nearest", "OMPL: rewire the k nearest neighbours (else those within a radius)"},
+        {"delay_collision_checking", "OMPL: check motions only when they could improve a solution"},
+        {"max_nearest_neighbors", "OMPL: neighbours a new PRM vertex is joined to"},
+        {"samples_per_batch", "OMPL: states sampled per batch (BIT*)"},
+    };
+    return m;
+}
+}  // namespace
+
+std::string parameterHelp(const std::string &name)
+{
+    for (const auto &f : carLatticeSettingFields())
+        if (f.name == name) return f.help;
+    for (const auto &f : improvedSettingFields())
+        if (f.name == name) return f.help;
+    for (const auto &f : cornerWeightFields())
+        if (f.name == name) return f.help;
+    const auto &m = singles();
+    const auto it = m.find(name);
+    if (it != m.end()) return it->second;
+    return "OMPL's parameter of this planner (see OMPL's documentation of the planner)";
+}
+
+}  // namespace gridcar
