@@ -11,6 +11,7 @@ PACKAGES=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libstb-dev
   libgtest-dev libbenchmark-dev
   ompl-demos python3 python3-matplotlib
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
   clang libclang-rt-14-dev
 )
 

@@ -160,36 +160,7 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
 
 std::string whyInvalid(const Query &query, const Pose2 &p, bool anyHeading)
 {
-    const FootprintChecker &fc = *query.setup.checker;
-    if (anyHeading ? fc.fitsAtSomeHeading(p.x, p.y, 72) : fc.isValid(p)) return "";
-    const OccupancyGrid &g = *query.grid;
-    const Cell c = g.worldToCell(p.x, p.y);
-    char buf[200];
-    if (!g.inBounds(c.col, c.row))
-    {
-        std::snprintf(buf, sizeof buf, "outside the map, which spans x %.3f..%.3f m, y %.3f..%.3f m", g.originX(),
-                      g.originX() + g.sizeX(), g.originY(), g.originY() + g.sizeY());
-        return buf;
-    }
-    std::string why = "in collision for vehicle " + query.vehicle.name + (anyHeading ? " at every heading (5-degree steps)" : "");
-    // unknown cells under or near the body: say so, and how to count them free
-    if (!g.unknownIsFree())
-    {
-        const int reach = int(std::ceil((query.vehicle.circumscribedRadius() + fc.reach()) / g.resolution())) + 1;
-        int unknown = 0, occupied = 0;
-        for (int r = c.row - reach; r <= c.row + reach; ++r)
-            for (int k = c.col - reach; k <= c.col + reach; ++k)
-            {
-                if (!g.inBounds(k, r)) continue;
-                unknown += g.at(k, r) == CellState::Unknown;
-                occupied += g.at(k, r) == CellState::Occupied;
-            }
-        if (g.at(c.col, c.row) == CellState::Unknown)
-            why += " (the map's cell there is unknown, which counts as blocked: --unknown-free counts unknown cells as free)";
-        else if (unknown > 0 && occupied == 0)
-            why += " (only unknown cells are near it, which count as blocked: --unknown-free counts unknown cells as free)";
-    }
-    return why;
+    return whyPoseInvalid(*query.setup.checker, *query.grid, p, anyHeading);
 }
 
 ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query)

@@ -202,4 +202,36 @@ std::vector<Cell> exploredCells(const ompl::base::Planner &planner, const Occupa
     return out;
 }
 
+std::string whyPoseInvalid(const FootprintChecker &fc, const OccupancyGrid &g, const Pose2 &p, bool anyHeading)
+{
+    if (anyHeading ? fc.fitsAtSomeHeading(p.x, p.y, 72) : fc.isValid(p)) return "";
+    const Cell c = g.worldToCell(p.x, p.y);
+    char buf[200];
+    if (!g.inBounds(c.col, c.row))
+    {
+        std::snprintf(buf, sizeof buf, "outside the map, which spans x %.3f..%.3f m, y %.3f..%.3f m", g.originX(),
+                      g.originX() + g.sizeX(), g.originY(), g.originY() + g.sizeY());
+        return buf;
+    }
+    std::string why = "in collision for vehicle " + fc.vehicle().name + (anyHeading ? " at every heading (5-degree steps)" : "");
+    // unknown cells under or near the body: say so, and how to count them free
+    if (!g.unknownIsFree())
+    {
+        const int reach = int(std::ceil((fc.vehicle().circumscribedRadius() + fc.reach()) / g.resolution())) + 1;
+        int unknown = 0, occupied = 0;
+        for (int r = c.row - reach; r <= c.row + reach; ++r)
+            for (int k = c.col - reach; k <= c.col + reach; ++k)
+            {
+                if (!g.inBounds(k, r)) continue;
+                unknown += g.at(k, r) == CellState::Unknown;
+                occupied += g.at(k, r) == CellState::Occupied;
+            }
+        if (g.at(c.col, c.row) == CellState::Unknown)
+            why += " (the map's cell there is unknown, which counts as blocked: --unknown-free counts unknown cells as free)";
+        else if (unknown > 0 && occupied == 0)
+            why += " (only unknown cells are near it, which count as blocked: --unknown-free counts unknown cells as free)";
+    }
+    return why;
+}
+
 }  // namespace gridcar

@@ -218,6 +218,9 @@ std::vector<std::array<double, 2>> readFootprint(const std::string &file, YAML::
 }
 }  // namespace
 
+/// The vehicle of a YAML mapping (a file's or a text's); @p s names it in errors and becomes its name.
+VehicleParams vehicleFromYamlNode(const YAML::Node &root, const std::string &s);
+
 VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
 {
     for (const auto &n : presetNames())
@@ -235,12 +238,31 @@ VehicleParams VehicleParams::fromNameOrFile(const std::string &s)
     {
         throw MapLoadError(s, std::string("YAML syntax error: ") + e.what());
     }
+    return vehicleFromYamlNode(root, s);
+}
+
+VehicleParams VehicleParams::fromYaml(const std::string &text, const std::string &label)
+{
+    YAML::Node root;
+    try
+    {
+        root = YAML::Load(text);
+    }
+    catch (const YAML::Exception &e)
+    {
+        throw MapLoadError(label, std::string("YAML syntax error: ") + e.what());
+    }
+    return vehicleFromYamlNode(root, label);
+}
+
+VehicleParams vehicleFromYamlNode(const YAML::Node &root, const std::string &s)
+{
     if (!root.IsMap()) throw MapLoadError(s, "expected a YAML mapping of vehicle fields");
     VehicleParams v;
     if (root["preset"])
     {
         if (!root["preset"].IsScalar()) throw MapLoadError(s, "field 'preset' must be a preset name");
-        v = preset(root["preset"].as<std::string>());
+        v = VehicleParams::preset(root["preset"].as<std::string>());
     }
     v.name = s;
     double scale = 1.0;

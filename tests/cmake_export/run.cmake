@@ -99,3 +99,21 @@ if(SHARED)
     endif()
   endforeach()
 endif()
+
+# the installed Python package: imported from the prefix's site-packages alone (a clean
+# environment: no LD_LIBRARY_PATH, no build tree on the path), and it plans
+if(PYTHON)
+  set(code "import gridcar, numpy as np
+occ = np.zeros((40, 80), bool); occ[0, :] = occ[-1, :] = occ[:, 0] = occ[:, -1] = True
+r = gridcar.plan(gridcar.Map.from_array(occ, 0.5), (5, 5, 0), (30, 12, 0))
+assert r.exact and r.drivable, r
+print(gridcar.__file__)")
+  execute_process(COMMAND env -i "PYTHONPATH=${WORK}/prefix/${PYTHON_DIR}" "${PYTHON}" -c "${code}"
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc)
+    message(FATAL_ERROR "the installed Python package failed (${rc}): ${out} ${err}")
+  endif()
+  if(NOT out MATCHES "^${WORK}/prefix/")
+    message(FATAL_ERROR "python imported gridcar from ${out}, not from the installed prefix ${WORK}/prefix")
+  endif()
+endif()

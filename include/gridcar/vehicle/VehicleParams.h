@@ -105,6 +105,9 @@ struct VehicleParams
     /// optional `preset:` to start from and an optional `scale:` applied last (scaled()).
     /// Throws std::invalid_argument (unknown preset) or MapLoadError (bad file).
     static VehicleParams fromNameOrFile(const std::string &nameOrPath);
+    /// The same fields as a vehicle file, from YAML (or JSON) text; @p label names the vehicle
+    /// and the source in errors (MapLoadError "<label>: <reason>").
+    static VehicleParams fromYaml(const std::string &text, const std::string &label);
 };
 
 }  // namespace gridcar

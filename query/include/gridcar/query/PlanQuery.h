@@ -93,4 +93,9 @@ std::vector<Pose2> solutionPoses(const GridSetup &setup, const ompl::base::Plann
 /// Cells of the states @p planner explored in its last solve() (its PlannerData vertices).
 std::vector<Cell> exploredCells(const ompl::base::Planner &planner, const OccupancyGrid &grid);
 
+/// "" if the vehicle of @p checker fits at @p p (at any heading in 5-degree steps with
+/// @p anyHeading), else why not: "outside the map, which spans ...", "in collision for vehicle X
+/// [at every heading]", with a word on unknown cells where only unknown cells are near it.
+std::string whyPoseInvalid(const FootprintChecker &checker, const OccupancyGrid &grid, const Pose2 &p, bool anyHeading = false);
+
 }  // namespace gridcar
