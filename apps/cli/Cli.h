@@ -94,7 +94,8 @@ ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query);
 // ------------------------------------------------------------------ parsing helpers
 /// "A,B[,C]" -> numbers; throws InputError naming the option.
 std::vector<double> parseNumbers(const std::string &text, const std::string &option, std::size_t minN, std::size_t maxN);
-/// A pose from --X (world X,Y[,YAW_DEG]) or --X-cell (COL,ROW[,DEG]); exactly one must be given.
+/// A pose from --X (world X,Y[,YAW]) or --X-cell (COL,ROW[,HEADING]); exactly one must be given. The
+/// yaw is in degrees unless it ends in its unit (90deg, 1.5708rad).
 /// @p rowsFromBottom: ROW counts from the map origin's row (ROS's order), else from the image's top.
 Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,
                 bool &hasYaw, bool rowsFromBottom = false);

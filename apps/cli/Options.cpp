@@ -66,11 +66,11 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
                         (plannerRequired ? std::string(". Required, here or in --params-file") : std::string()));
     q.cmd = cmd;
     cmd->add_option("--start", q.start,
-                    "Start X,Y[,YAW_DEG] in the world frame (m; yaw 0 = +x, CCW); no yaw: free start heading for the grid "
+                    "Start X,Y[,YAW] in the world frame (m; yaw 0 = +x, CCW, in degrees, or with its unit: 90deg, 1.5708rad); no yaw: free start heading for the grid "
                     "planners (OMPL planners start at the first yaw, in 5-degree steps from 0, at which the vehicle fits)");
-    cmd->add_option("--start-cell", q.startCell, "Start COL,ROW[,HEADING_DEG] (row 0 = top image row; see --row-order)");
-    cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW_DEG]: with a yaw the car-lattice planners (and OMPL's) arrive at that heading (--param match_goal_heading=0 relaxes it); without one, at any heading where the vehicle fits");
-    cmd->add_option("--goal-cell", q.goalCell, "Goal COL,ROW[,HEADING_DEG]");
+    cmd->add_option("--start-cell", q.startCell, "Start COL,ROW[,HEADING] (row 0 = top image row; see --row-order; heading as --start's yaw)");
+    cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW] (yaw as --start's): with a yaw the car-lattice planners (and OMPL's) arrive at that heading (--param match_goal_heading=0 relaxes it); without one, at any heading where the vehicle fits");
+    cmd->add_option("--goal-cell", q.goalCell, "Goal COL,ROW[,HEADING]");
     cmd->add_option("--row-order", q.rowOrder,
                     "Which row --start-cell / --goal-cell count from: top (row 0 = the image's first row) or bottom "
                     "(row 0 = the map origin's row, as ROS's OccupancyGrid data and map_server count)")
@@ -210,24 +210,44 @@ Pose2 parsePose(const std::string &world, const std::string &cell, const std::st
                 bool &hasYaw, bool rowsFromBottom)
 {
     if (world.empty() == cell.empty())
-        throw InputError("give exactly one of --" + which + " X,Y[,YAW_DEG] and --" + which + "-cell COL,ROW[,HEADING_DEG]");
+        throw InputError("give exactly one of --" + which + " X,Y[,YAW] and --" + which + "-cell COL,ROW[,HEADING]");
     Pose2 p;
+    // the yaw is in degrees unless it names its unit: 90deg, 1.5708rad
+    const std::string option = world.empty() ? "--" + which + "-cell" : "--" + which;
+    std::string text = world.empty() ? cell : world;
+    double yawUnit = M_PI / 180.0;
+    bool unitGiven = false;
+    for (const auto &[suffix, unit] : {std::make_pair(std::string("rad"), 1.0), std::make_pair(std::string("deg"), M_PI / 180.0)})
+    {
+        const std::size_t end = text.find_last_not_of(" \t") + 1;
+        if (end >= suffix.size() && text.compare(end - suffix.size(), suffix.size(), suffix) == 0)
+        {
+            text = text.substr(0, end - suffix.size());
+            yawUnit = unit;
+            unitGiven = true;
+            break;
+        }
+    }
+    const auto v = parseNumbers(text, option, 2, 3);
+    if (unitGiven && v.size() != 3)
+        throw InputError(option + " '" + (world.empty() ? cell : world) + "': a unit (deg, rad) needs a yaw: X,Y,YAW");
+    // a yaw without a unit that looks like radians (a fraction within 2 pi): say how it is read
+    if (!unitGiven && v.size() == 3 && v[2] != std::round(v[2]) && std::abs(v[2]) <= 2 * M_PI + 1e-3)
+        std::fprintf(stderr, "gridcar: note: %s yaw %g is read as degrees; write %grad for radians\n", option.c_str(), v[2], v[2]);
     if (!world.empty())
     {
-        const auto v = parseNumbers(world, "--" + which, 2, 3);
-        p = {v[0], v[1], v.size() == 3 ? v[2] * M_PI / 180.0 : 0.0};
+        p = {v[0], v[1], v.size() == 3 ? v[2] * yawUnit : 0.0};
         hasYaw = v.size() == 3;
     }
     else
     {
-        const auto v = parseNumbers(cell, "--" + which + "-cell", 2, 3);
         if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
             throw InputError("--" + which + "-cell: column and row must be integers");
         if (std::abs(v[0]) > 1e9 || std::abs(v[1]) > 1e9 || !g.inBounds(int(v[0]), int(v[1])))
             throw InputError("--" + which + "-cell " + cell + " is outside the " + std::to_string(g.width()) + " x " +
                              std::to_string(g.height()) + " map");
         const int row = rowsFromBottom ? g.height() - 1 - int(v[1]) : int(v[1]);
-        p = {g.cellCenterX(int(v[0])), g.cellCenterY(row), v.size() == 3 ? v[2] * M_PI / 180.0 : 0.0};
+        p = {g.cellCenterX(int(v[0])), g.cellCenterY(row), v.size() == 3 ? v[2] * yawUnit : 0.0};
         hasYaw = v.size() == 3;
     }
     p.yaw = wrapYaw(p.yaw);
