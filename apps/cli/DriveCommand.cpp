@@ -97,7 +97,7 @@ bool pathToDrive(const DriveOptions &o, Query &query, std::vector<Pose2> &path, 
     profile.reversing = query.setup.reversing();  // a stop at each Reeds-Shepp cusp
     j["plan"] = {{"planner", p.planner},         {"status", q.status.asString()}, {"cost", q.cost},
                  {"length", q.metrics.length},   {"expanded", q.expanded},        {"turns", q.metrics.turns},
-                 {"max_turn_deg", q.maxTurnDeg}, {"time", q.seconds},             {"min_clearance", q.metrics.minClearance},
+                 {"max_turn_deg", q.maxTurnDeg}, {"max_turn_angle_deg", q.metrics.maxTurnAngleDeg}, {"time", q.seconds},             {"min_clearance", q.metrics.minClearance},
                  {"driving_time_profile", drivingTime(q.path, query.vehicle, profile)},
                  {"cusps", q.metrics.cusps},
                  {"drivable", q.drivability.drivable}};

@@ -59,6 +59,7 @@ nlohmann::json resultJson(const QueryResult &q, const Query &query)
     j["expanded"] = q.expanded;
     j["turns"] = m.turns;
     j["max_turn_deg"] = q.maxTurnDeg;
+    j["max_turn_angle_deg"] = m.maxTurnAngleDeg;
     j["min_clearance"] = m.minClearance;
     j["min_path_distance"] = m.minPathDistance;
     j["max_curvature"] = m.maxCurvature;
@@ -97,9 +98,10 @@ void printResult(const std::string &planner, const QueryResult &q, const Query &
     }
     if (q.smoothed) std::printf(" (smoothing %.4f s)", q.smoothingSeconds);
     if (!q.notExactBecause.empty()) std::printf(" (%s)", q.notExactBecause.c_str());
-    std::printf("\n  length %.2f m, cost %.2f, %d poses, %d turns, max turn %.1f deg, max curvature %.3f 1/m, "
-                "min clearance %.2f m (path line %.2f m from obstacles)",
-                m.length, q.cost, int(q.path.size()), m.turns, q.maxTurnDeg, m.maxCurvature, m.minClearance, m.minPathDistance);
+    std::printf("\n  length %.2f m, cost %.2f, %d poses, %d turns (the largest %.0f deg; at one vertex up to %.1f deg), "
+                "max curvature %.3f 1/m, min clearance %.2f m (path line %.2f m from obstacles)",
+                m.length, q.cost, int(q.path.size()), m.turns, m.maxTurnAngleDeg, q.maxTurnDeg, m.maxCurvature,
+                m.minClearance, m.minPathDistance);
     if (m.cusps) std::printf(", %d cusp(s)", m.cusps);
     if (q.expanded) std::printf(", %llu nodes expanded", (unsigned long long)q.expanded);
     if (!q.path.empty())
@@ -207,7 +209,7 @@ Command addPlanCommand(CLI::App &app)
     auto *c = app.add_subcommand("plan", "Plan one path on a map with a grid planner or an OMPL planner");
     addQueryOptions(c, o->query, true);
     c->add_flag("--json", o->json,
-                "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg, max_curvature, "
+                "Print one JSON object: status, planner, cost, length, expanded, turns, max_turn_deg (at one vertex: depends on the sampling), max_turn_angle_deg (of one turn: does not), max_curvature, "
                 "max_curvature_rate (1/m^2, fastest change of curvature), curvature_rate_limit (the vehicle's), "
                 "within_curvature_rate, cusps, "
                 "min_path_distance, smoothing_time, min_clearance, time, drivable (and not_drivable_because), not_exact_because "

@@ -194,6 +194,7 @@ struct PlanResult
     std::string planner;
     std::vector<Pose2> path, rawPath;
     double seconds{0}, length{0}, cost{0}, maxCurvature{0}, minClearance{0}, minPathDistance{0}, maxTurnDeg{0};
+    double maxTurnAngleDeg{0};
     double drivingTimeProfile{0}, goalDistance{NAN}, goalHeadingErrorDeg{NAN};
     int turns{0}, cusps{0};
     std::uint64_t expanded{0};
@@ -273,6 +274,7 @@ struct Scene
         r.turns = q.metrics.turns;
         r.cusps = q.metrics.cusps;
         r.maxTurnDeg = q.maxTurnDeg;
+        r.maxTurnAngleDeg = q.metrics.maxTurnAngleDeg;
         r.maxCurvature = q.metrics.maxCurvature;
         r.minClearance = q.metrics.minClearance;
         r.minPathDistance = q.metrics.minPathDistance;
@@ -481,7 +483,9 @@ rear_overhang, max_steer_deg, max_speed, ..., optional preset and scale).)doc")
         .def_readonly("cost", &PlanResult::cost, "the planner's own search cost (the length for OMPL's planners)")
         .def_readonly("turns", &PlanResult::turns)
         .def_readonly("cusps", &PlanResult::cusps, "changes between forward and reverse")
-        .def_readonly("max_turn_deg", &PlanResult::maxTurnDeg)
+        .def_readonly("max_turn_deg", &PlanResult::maxTurnDeg, "deg, the largest heading change at one vertex (depends on the sampling)")
+        .def_readonly("max_turn_angle_deg", &PlanResult::maxTurnAngleDeg,
+                      "deg, the largest heading change of one turn (a sharp corner and the arc driving it alike)")
         .def_readonly("max_curvature", &PlanResult::maxCurvature, "1/m")
         .def_readonly("min_clearance", &PlanResult::minClearance, "m, smallest distance from the body to an obstacle")
         .def_readonly("min_path_distance", &PlanResult::minPathDistance, "m, smallest distance from the path line to an obstacle")

@@ -65,15 +65,32 @@ PathMetrics pieceMetrics(const std::vector<Pose2> &path, const FootprintChecker 
         }
         const int w = std::max(1, int(std::lround(tp.window / tp.sampleStep)));
         const double thr = tp.thresholdDeg * M_PI / 180.0;
+        // the chord over the window ending at sample k
+        const auto chordBefore = [&](int k) { return std::atan2(res[k].y - res[k - w].y, res[k].x - res[k - w].x); };
+        // a turn's angle: the heading turned from the chord before its first sample to the
+        // chord after its last, summed chord by chord (a loop turns more than 180 degrees)
+        const auto turnAngle = [&](int first, int last) {
+            double sum = 0.0;
+            for (int k = first; k < last + w; ++k) sum += wrapAngle(chordBefore(k + 1) - chordBefore(k));
+            return std::abs(sum);
+        };
         bool inTurn = false;
-        for (int k = w; k + w < int(res.size()); ++k)
+        int turnStart = 0;
+        const int end = int(res.size()) - w;  // samples k with k + w < res.size()
+        for (int k = w; k < end; ++k)
         {
-            const double a1 = std::atan2(res[k].y - res[k - w].y, res[k].x - res[k - w].x);
-            const double a2 = std::atan2(res[k + w].y - res[k].y, res[k + w].x - res[k].x);
+            const double a1 = chordBefore(k);
+            const double a2 = chordBefore(k + w);
             const bool turning = std::abs(wrapAngle(a2 - a1)) > thr;
-            if (turning && !inTurn) ++m.turns;
+            if (turning && !inTurn)
+            {
+                ++m.turns;
+                turnStart = k;
+            }
+            if (!turning && inTurn) m.maxTurnAngleDeg = std::max(m.maxTurnAngleDeg, turnAngle(turnStart, k - 1) * 180.0 / M_PI);
             inTurn = turning;
         }
+        if (inTurn) m.maxTurnAngleDeg = std::max(m.maxTurnAngleDeg, turnAngle(turnStart, end - 1) * 180.0 / M_PI);
     }
 
     // clearance along the path
@@ -121,6 +138,7 @@ PathMetrics computePathMetrics(const std::vector<Pose2> &path, const FootprintCh
         m.length += q.length;
         m.turns += q.turns;
         m.maxTurnDeg = std::max(m.maxTurnDeg, q.maxTurnDeg);
+        m.maxTurnAngleDeg = std::max(m.maxTurnAngleDeg, q.maxTurnAngleDeg);
         m.turningPoints += q.turningPoints;
         m.minClearance = std::min(m.minClearance, q.minClearance);
         m.minPathDistance = std::min(m.minPathDistance, q.minPathDistance);

@@ -22,7 +22,10 @@ struct PathMetrics
 {
     double length{0.0};         ///< m, sum of segment lengths
     int turns{0};               ///< number of turns (see computePathMetrics())
-    double maxTurnDeg{0.0};     ///< largest heading change at one turning point, degrees
+    double maxTurnDeg{0.0};     ///< largest heading change at one turning point, degrees (depends on the sampling)
+    /// Largest heading change of one turn (as `turns` counts them), degrees: the same for a
+    /// sharp corner and for the arc or the densely sampled curve that drives it
+    double maxTurnAngleDeg{0.0};
     int turningPoints{0};       ///< vertices where the heading changes (collinear ones removed)
     double minClearance{0.0};   ///< m, FootprintChecker::clearance minimum along the path
     double minPathDistance{0.0}; ///< m, smallest obstacle distance d_O of the path line itself (paper I's "nearest distance to the curb")
@@ -42,7 +45,10 @@ struct PathMetrics
  *   by more than TurnParams::thresholdDeg. So a 90-degree corner is one turn whether it is a
  *   sharp grid corner or a smooth arc, while a grid staircase (E, NE, E, NE, ...) or a zigzag
  *   around a straight line is no turn. Corners closer than one window to either end of the
- *   path are not counted.
+ *   path are not counted. maxTurnAngleDeg is the largest heading change of one turn, from the
+ *   chord before its first sample to the chord after its last: it does not depend on how
+ *   densely the path is sampled (maxTurnDeg does: a smooth 90-degree arc at 5 cm steps turns
+ *   some degrees per vertex).
  * - Max curvature: maxMengerCurvature() (PostProcess.h) of the vertices: for a smooth, densely
  *   sampled path the curvature the vehicle must drive; for a grid path it scores the sharpest
  *   corner (2 sin(theta) / chord).
