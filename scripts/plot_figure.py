@@ -7,10 +7,12 @@ magenta star). Reverse segments of a path are drawn in their own colour.
 Usage: plot_figure.py FIGURE.json OUT.png
 
 FIGURE.json: {"title", "image", "extent": [x0, x1, y0, y1], "vehicle": {length, width,
-rear_overhang} or null, "start": [x, y, yaw], "goal": [x, y, yaw] (yaw null: free),
+rear_overhang} or null, "start": [x, y, yaw], "goal": [x, y, yaw] (yaw null: free; both absent
+in a picture of a map alone),
 "paths": [{"label", "colour", "points": [[x, y, yaw], ...], "outline": bool, "width"}],
 "markers": [{"label", "colour", "marker", "points": [[x, y], ...]}],
-"tint": {"label", "colour"} (a legend entry for cells tinted in the image)}."""
+"tint": {"label", "colour"} (a legend entry for cells tinted in the image),
+"costs": {"label", "colour"} (a legend entry for the map's cost layer, shaded in the image)}."""
 import json
 import math
 import sys
@@ -110,22 +112,25 @@ def main():
                     linestyle=m.get("linestyle", "none"), lw=1)
             handles.append(Line2D([], [], color=m["colour"], marker=m.get("marker", "o"),
                                   linestyle=m.get("linestyle", "none"), label=m["label"]))
-    sx, sy, syaw = spec["start"]
-    gx, gy, gyaw = spec["goal"]
-    if veh:
-        outline(ax, sx, sy, syaw, veh, "black", 1.0)
-        if gyaw is not None:
-            outline(ax, gx, gy, gyaw, veh, "m", 1.0)
-    ax.plot(sx, sy, "ko", ms=7)
-    ax.plot(gx, gy, "m*", ms=13)
-    handles.append(Line2D([], [], color="k", marker="o", linestyle="none", label="start"))
-    handles.append(Line2D([], [], color="m", marker="*", ms=11, linestyle="none",
-                          label="goal" + ("" if gyaw is not None else " (any heading)")))
-    if veh:
+    if spec.get("start") is not None and spec.get("goal") is not None:
+        sx, sy, syaw = spec["start"]
+        gx, gy, gyaw = spec["goal"]
+        if veh:
+            outline(ax, sx, sy, syaw, veh, "black", 1.0)
+            if gyaw is not None:
+                outline(ax, gx, gy, gyaw, veh, "m", 1.0)
+        ax.plot(sx, sy, "ko", ms=7)
+        ax.plot(gx, gy, "m*", ms=13)
+        handles.append(Line2D([], [], color="k", marker="o", linestyle="none", label="start"))
+        handles.append(Line2D([], [], color="m", marker="*", ms=11, linestyle="none",
+                              label="goal" + ("" if gyaw is not None else " (any heading)")))
+    if veh and (spec.get("paths") or spec.get("start") is not None):
         handles.append(Line2D([], [], color="grey", lw=0.8, label="vehicle {} ({:g} m x {:g} m)".format(
             "footprint" if veh.get("footprint") else "outline", veh["length"], veh["width"])))
     if spec.get("tint"):
         handles.append(mpatches.Patch(color=spec["tint"]["colour"], label=spec["tint"]["label"]))
+    if spec.get("costs"):
+        handles.append(mpatches.Patch(color=spec["costs"]["colour"], label=spec["costs"]["label"]))
     handles.append(mpatches.Patch(facecolor="black", label="occupied"))
     handles.append(mpatches.Patch(facecolor=(190 / 255,) * 3, label="unknown"))
     bar = nice_length(w)

@@ -1,6 +1,7 @@
 // gridcar info / genmap / demo: maps, their distance field and pictures.
 #include "Cli.h"
 
+#include "gridcar/bench/Figure.h"
 #include "gridcar/collision/FootprintChecker.h"
 #include "gridcar/distance/DistanceField.h"
 #include "gridcar/map/CampusGenerator.h"
@@ -200,16 +201,22 @@ int runDemo(const DemoOptions &o)
                 freeCells ? 100.0 * fits / freeCells : 0.0);
 
     t0 = Clock::now();
-    MapCanvas canvas(*grid);
-    canvas.save(o.outDir + "/map.png");
-    // Voronoi diagram overlay
-    MapCanvas vor(*grid);
-    std::vector<Cell> vcells;
+    // the pictures through the figure script: axes in metres, a scale bar, a legend, the cost
+    // layer shaded where the map has one
+    bench::Figure fig;
+    fig.endpoints = false;
+    char title[200];
+    std::snprintf(title, sizeof title, "%s: %.0f m x %.0f m at %.3f m/cell", std::filesystem::path(label).filename().c_str(), grid->sizeX(), grid->sizeY(),
+                  grid->resolution());
+    fig.title = title;
+    bench::drawFigure(*grid, fig, o.outDir + "/map.png", "demo");
     for (int r = 0; r < grid->height(); ++r)
         for (int c = 0; c < grid->width(); ++c)
-            if (field->isVoronoi(c, r)) vcells.push_back({c, r});
-    vor.tintCells(vcells, {220, 40, 40});
-    vor.save(o.outDir + "/voronoi.png");
+            if (field->isVoronoi(c, r)) fig.tinted.push_back({c, r});
+    fig.tintColour = {220, 40, 40};
+    fig.tintLabel = "Voronoi diagram";
+    fig.title = std::string(title) + ", Voronoi diagram";
+    bench::drawFigure(*grid, fig, o.outDir + "/voronoi.png", "demo");
     std::fprintf(stderr, "[4/4] pictures written (%.2f s)\n", secondsSince(t0));
     std::printf("wrote %s/map.png and %s/voronoi.png%s\n", o.outDir.c_str(), o.outDir.c_str(),
                 o.map.empty() ? (" and " + o.outDir + "/campus.yaml").c_str() : "");

@@ -54,18 +54,29 @@ std::string defaultFigureScript()
     return GRIDCAR_FIGURE_SCRIPT;
 }
 
+static std::string hexColour(const Rgb &c)
+{
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c[0], c[1], c[2]);
+    return buf;
+}
+
 void drawFigure(const OccupancyGrid &grid, const Figure &fig, const std::string &png, const std::string &command)
 {
     const auto t0 = std::chrono::steady_clock::now();
     std::fprintf(stderr, "[%s] drawing %s ...\n", command.c_str(), png.c_str());
     WorldBox box;
-    box.add(fig.start.x, fig.start.y);
-    box.add(fig.goal.x, fig.goal.y);
+    if (fig.endpoints)
+    {
+        box.add(fig.start.x, fig.start.y);
+        box.add(fig.goal.x, fig.goal.y);
+    }
     for (const FigurePath &p : fig.paths) box.add(p.points);
     for (const FigureMarkers &m : fig.markers)
         for (const auto &[x, y] : m.points) box.add(x, y);
+    const bool wholeMap = !fig.endpoints && fig.paths.empty() && fig.markers.empty();
     const double vehicleReach = fig.vehicle.isPoint() ? 0.0 : fig.vehicle.length;
-    const OccupancyGrid crop = cropAround(grid, box, fig.margin + vehicleReach);
+    const OccupancyGrid crop = wholeMap ? grid : cropAround(grid, box, fig.margin + vehicleReach);
     MapCanvas canvas(crop, 1600);
     if (!fig.tinted.empty())
     {
@@ -75,7 +86,7 @@ void drawFigure(const OccupancyGrid &grid, const Figure &fig, const std::string 
             const Cell k = crop.worldToCell(grid.cellCenterX(c.col), grid.cellCenterY(c.row));
             if (crop.inBounds(k.col, k.row)) inCrop.push_back(k);
         }
-        canvas.tintCells(inCrop, {170, 200, 255});
+        canvas.tintCells(inCrop, fig.tintColour);
     }
     // the map crop and the figure's description beside the picture, removed afterwards
     const std::string stem = (fs::temp_directory_path() / ("gridcar-figure-" + std::to_string(::getpid()))).string();
@@ -90,8 +101,11 @@ void drawFigure(const OccupancyGrid &grid, const Figure &fig, const std::string 
                                                           {"width", fig.vehicle.width},
                                                           {"rear_overhang", fig.vehicle.rearOverhang},
                                                           {"footprint", fig.vehicle.footprint}};
-    j["start"] = {fig.start.x, fig.start.y, fig.start.yaw};
-    j["goal"] = {fig.goal.x, fig.goal.y, fig.goalYaw ? nlohmann::json(fig.goal.yaw) : nlohmann::json(nullptr)};
+    if (fig.endpoints)
+    {
+        j["start"] = {fig.start.x, fig.start.y, fig.start.yaw};
+        j["goal"] = {fig.goal.x, fig.goal.y, fig.goalYaw ? nlohmann::json(fig.goal.yaw) : nlohmann::json(nullptr)};
+    }
     j["paths"] = nlohmann::json::array();
     for (const FigurePath &p : fig.paths)
         j["paths"].push_back({{"label", p.label}, {"colour", p.colour}, {"points", poses(p.points)}, {"outline", p.outline},
@@ -104,7 +118,8 @@ void drawFigure(const OccupancyGrid &grid, const Figure &fig, const std::string 
         j["markers"].push_back(
             {{"label", m.label}, {"colour", m.colour}, {"marker", m.marker}, {"linestyle", m.linestyle}, {"points", pts}});
     }
-    if (!fig.tinted.empty()) j["tint"] = {{"label", fig.tintLabel}, {"colour", "#aac8ff"}};
+    if (!fig.tinted.empty()) j["tint"] = {{"label", fig.tintLabel}, {"colour", hexColour(fig.tintColour)}};
+    if (crop.hasCosts()) j["costs"] = {{"label", "cost layer (0-252: deeper, costlier)"}, {"colour", hexColour(kCostColour)}};
     std::ofstream(specFile) << j.dump() << "\n";
     const std::string script = defaultFigureScript();
     const std::string log = stem + ".log";

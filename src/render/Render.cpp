@@ -32,6 +32,8 @@ MapCanvas::MapCanvas(const OccupancyGrid &grid, int maxSide) : grid_(grid)
     img_.data.assign(std::size_t(img_.width) * img_.height * 3, 255);
     // rank: free 0 < unknown 1 < occupied 2; keep the darkest per pixel
     std::vector<std::uint8_t> rank(std::size_t(img_.width) * img_.height, 0);
+    // the cost layer (Nav2's 0..252 on free cells), the highest per pixel
+    std::vector<std::uint8_t> cost(grid.hasCosts() ? rank.size() : 0, 0);
     for (int r = 0; r < grid.height(); ++r)
     {
         const int py0 = int(r * scale_), py1 = std::max(py0, int((r + 1) * scale_) - 1);
@@ -39,13 +41,15 @@ MapCanvas::MapCanvas(const OccupancyGrid &grid, int maxSide) : grid_(grid)
         {
             const CellState s = grid.at(c, r);
             const std::uint8_t k = s == CellState::Occupied ? 2 : s == CellState::Unknown ? 1 : 0;
-            if (k == 0) continue;
+            const std::uint8_t cc = k == 0 ? grid.cost(c, r) : 0;
+            if (k == 0 && cc == 0) continue;
             const int px0 = int(c * scale_), px1 = std::max(px0, int((c + 1) * scale_) - 1);
             for (int py = py0; py <= std::min(py1, img_.height - 1); ++py)
                 for (int px = px0; px <= std::min(px1, img_.width - 1); ++px)
                 {
-                    auto &rk = rank[std::size_t(py) * img_.width + px];
-                    rk = std::max(rk, k);
+                    const std::size_t i = std::size_t(py) * img_.width + px;
+                    rank[i] = std::max(rank[i], k);
+                    if (cc) cost[i] = std::max(cost[i], cc);
                 }
         }
     }
@@ -53,6 +57,13 @@ MapCanvas::MapCanvas(const OccupancyGrid &grid, int maxSide) : grid_(grid)
     {
         const std::uint8_t v = rank[i] == 2 ? 0 : rank[i] == 1 ? 190 : 255;
         img_.data[3 * i] = img_.data[3 * i + 1] = img_.data[3 * i + 2] = v;
+        if (rank[i] == 0 && !cost.empty() && cost[i])
+        {
+            // white towards kCostColour as the cost rises to 252
+            const double a = 0.85 * cost[i] / 252.0;
+            for (int ch = 0; ch < 3; ++ch)
+                img_.data[3 * i + ch] = std::uint8_t(std::lround(255.0 * (1.0 - a) + kCostColour[ch] * a));
+        }
     }
 }
 

@@ -33,10 +33,14 @@ struct WorldBox
 /// (for pictures of a query's surroundings).
 OccupancyGrid cropAround(const OccupancyGrid &grid, const WorldBox &box, double margin);
 
+/// The colour a free cell of the highest cost (252) is drawn in; lower costs between it and white.
+inline constexpr Rgb kCostColour{230, 120, 20};
+
 /**
- * @brief An RGB picture of a grid (free white, unknown grey, occupied black), scaled so the
+ * @brief An RGB picture of a grid (free white, unknown grey, occupied black; free cells of a
+ * cost layer shaded towards kCostColour as their cost rises), scaled so the
  * longer side has at most @p maxSide pixels (or enlarged up to @p maxSide for small maps).
- * When scaled down, a pixel takes the darkest state of the cells it covers, so thin curbs stay
+ * When scaled down, a pixel takes the darkest state (and the highest cost) of the cells it covers, so thin curbs stay
  * visible. Overlays are drawn in world coordinates.
  */
 class MapCanvas

@@ -1,11 +1,12 @@
 #pragma once
 /// @file Figure.h
 /// @brief The pictures of `gridcar plan --png` and `gridcar drive --png`: the map around the
-/// paths with axes in metres, a scale bar, a legend, the vehicle's outline along each path and
+/// paths (or the whole map, for `gridcar demo`) with axes in metres, a scale bar, a legend, the vehicle's outline along each path and
 /// in reverse segments their own colour, in `gridcar bench`'s colours (start black, goal
 /// magenta). gridcar draws the map crop; scripts/plot_figure.py (matplotlib) draws the rest.
 
 #include "gridcar/map/OccupancyGrid.h"
+#include "gridcar/render/Render.h"
 #include "gridcar/vehicle/VehicleParams.h"
 
 #include <string>
@@ -36,15 +37,18 @@ struct Figure
     std::string title;
     VehicleParams vehicle;
     Pose2 start, goal;
+    bool endpoints{true};  ///< false: no start and goal drawn (a map picture)
     bool goalYaw{true};  ///< false: the goal's heading was free (no goal outline)
     std::vector<FigurePath> paths;
     std::vector<FigureMarkers> markers;
     std::vector<Cell> tinted;  ///< map cells to tint (e.g. what a planner explored)
     std::string tintLabel{"explored by the planner"};
+    Rgb tintColour{170, 200, 255};
     double margin{10.0};  ///< metres of map around everything drawn
 };
 
-/// Draws @p fig over @p grid into @p png (progress on stderr, prefixed "[@p command]").
+/// Draws @p fig over @p grid into @p png (progress on stderr, prefixed "[@p command]"): the
+/// map around what is drawn (the whole map when nothing is), its cost layer where it has one.
 /// std::runtime_error naming the script when the picture cannot be drawn.
 void drawFigure(const OccupancyGrid &grid, const Figure &fig, const std::string &png, const std::string &command);
 
