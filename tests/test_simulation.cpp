@@ -5,6 +5,7 @@
 #include "gridcar/spaces/Setup.h"
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/map/MapIO.h"
+#include "gridcar/vehicle/Dynamics.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "TestData.h"
 
@@ -39,6 +40,31 @@ std::vector<Pose2> straight(double x0, double x1, double y, double step = 0.25)
     return p;
 }
 }  // namespace
+
+// What `driving_time_profile` (drivingTime()) and the simulation each count: the profile is the
+// path at the vehicle's limits; the follower drives it so where no obstacle is within rho0 of the
+// body, and slower (speed x rho / rho0, down to half) where one is: a
+// corridor with 0.8 m beside the robot takes it nearly twice the profile's time, and
+// the same with rho0 below that room takes the profile's time.
+TEST(Simulation, TheProfileIsTheSimulatedTimeWhereNoObstacleIsWithinRho0)
+{
+    GridSetup s = road(60.0, 0.5);  // 2 m of free cells between the curbs: 0.8 m beside the robot (0.4 m wide)
+    const VehicleParams &v = s.checker->vehicle();
+    const double y = s.grid->cellCenterY(s.grid->height() / 2);
+    const auto path = straight(5.0, 55.0, y);
+    const double profile = drivingTime(path, v);
+    FollowerParams fp;  // rho0 1.5 m
+    const DriveResult near = drivePath(path, *s.checker, Scenario(), fp);
+    ASSERT_EQ(near.outcome, DriveResult::Outcome::Reached) << near.reason;
+    fp.rho0 = 0.2;  // below the room on either side
+    const DriveResult clear = drivePath(path, *s.checker, Scenario(), fp);
+    ASSERT_EQ(clear.outcome, DriveResult::Outcome::Reached) << clear.reason;
+    std::printf("corridor: profile %.2f s, simulated %.2f s (rho0 1.5 m), %.2f s (rho0 0.2 m)\n", profile,
+                near.drivingTime, clear.drivingTime);
+    EXPECT_NEAR(clear.drivingTime, profile, 0.02 * profile);
+    EXPECT_GT(near.drivingTime, 1.3 * profile);
+    EXPECT_LT(near.drivingTime, 2.0 * profile + 1.0);
+}
 
 TEST(Simulation, BicycleTurnsOnTheCircleItsSteeringImplies)
 {

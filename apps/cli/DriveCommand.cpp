@@ -184,7 +184,9 @@ Command addDriveCommand(CLI::App &app)
     c->add_option("--rho0", o->rho0, "Influence distance of obstacles, m (beyond the body's half width)")->capture_default_str();
     c->add_flag("--json", o->json,
                 "Print one JSON object: outcome (reached | collided | stuck | timeout), reason, driving_time, path_length, "
-                "distance_driven, cross_track_mean, cross_track_max, min_clearance, recoveries, plan {...}");
+                "distance_driven, cross_track_mean, cross_track_max, min_clearance, recoveries, plan {...} (with "
+                "driving_time_profile: the path at the vehicle's limits; the follower drives slower where an "
+                "obstacle is within --rho0 of the body, so driving_time is longer indoors)");
     c->add_option("--png", o->png, "Picture (matplotlib, axes in metres, scale bar, legend): the path (blue), the trajectory (red, the "
                                    "vehicle's outline along it, reverse in purple), the moving obstacles (orange)");
     c->add_option("--out", o->trajectoryCsv, "Trajectory CSV: t (s), x, y (m), yaw_rad, v (m/s, negative in reverse), steer_rad");
