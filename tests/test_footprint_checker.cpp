@@ -232,6 +232,46 @@ TEST(FootprintChecker, NeverCallsACollidingPoseFreeOnRandomMaps)
     RecordProperty("ambiguous_touching_poses", ambiguous);
 }
 
+TEST(FootprintChecker, ExactCheckAcrossTheTilesOfItsObstacleBoxes)
+{
+    // FCL boxes made per 64 x 64 cells on first use: bodies straddling the tile corners
+    // (cells 64, 128, 192 across; 64, 128 down) get the brute force's answer
+    auto grid = std::make_shared<OccupancyGrid>(256, 200, 0.05);
+    grid->setOrigin(1.0, -2.0);
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> cw(0, 255), ch(0, 199), sz(1, 12);
+    for (int k = 0; k < 400; ++k)
+    {
+        const int c = cw(rng), r = ch(rng), w = sz(rng), h = sz(rng);
+        for (int rr = r; rr < std::min(200, r + h); ++rr)
+            for (int cc = c; cc < std::min(256, c + w); ++cc) grid->set(cc, rr, CellState::Occupied);
+    }
+    auto field = std::make_shared<DistanceField>(*grid);
+    FootprintChecker fc(grid, field, VehicleParams::preset("paper-c-robot"));
+    std::uniform_real_distribution<double> jitter(-0.4, 0.4), uyaw(-M_PI, M_PI);
+    std::uniform_int_distribution<int> corner(1, 3), cornerRow(1, 2);
+    int disagreements = 0, collisions = 0, free = 0;
+    for (int i = 0; i < 4000; ++i)
+    {
+        const double x = grid->originX() + 64 * corner(rng) * 0.05 + jitter(rng);
+        const double y = grid->originY() + grid->sizeY() - 64 * cornerRow(rng) * 0.05 + jitter(rng);
+        const double yaw = uyaw(rng);
+        bool amb = false;
+        const bool ref = bruteCollides(fc, x, y, yaw, amb);
+        const bool exact = fc.isValidExact(x, y, yaw);
+        (ref ? collisions : free) += 1;
+        if (exact == ref && !amb)
+        {
+            ++disagreements;
+            ADD_FAILURE() << "pose " << x << "," << y << "," << yaw << " ref collides=" << ref;
+        }
+    }
+    EXPECT_EQ(disagreements, 0);
+    EXPECT_GT(collisions, 400);  // both answers exercised
+    EXPECT_GT(free, 400);
+    EXPECT_GT(fc.obstacleBoxCount(), 100u);
+}
+
 TEST(FootprintChecker, AgreesWithRasterisationOnRealMaps)
 {
     GRIDCAR_REQUIRE_SHARED_MAPS();

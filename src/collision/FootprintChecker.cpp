@@ -2,6 +2,7 @@
 
 #include "gridcar/core/Angles.h"
 
+#include "collision/detail/ExactTiles.h"
 #include "collision/detail/FclShapes.h"
 #include "collision/detail/Polygon.h"
 
@@ -18,6 +19,7 @@
 namespace gridcar
 {
 using detail::makeBox;
+
 
 FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, std::shared_ptr<const DistanceField> field,
                                    const VehicleParams &vehicle)
@@ -71,77 +73,13 @@ FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, st
     discReach_ = far + discR_ + 3 * halfDiag_ + 1e-3;  // (1 mm for the field's float rounding)
     buildDiscBits();
 
-    // Obstacle boundary cells: blocked cells with a non-blocked 4-neighbour inside the map.
-    const OccupancyGrid &g = *grid_;
-    const int W = g.width(), H = g.height();
-    auto boundary = [&](int c, int r) {
-        if (!g.isBlocked(c, r)) return false;
-        return (c > 0 && !g.isBlocked(c - 1, r)) || (c + 1 < W && !g.isBlocked(c + 1, r)) ||
-               (r > 0 && !g.isBlocked(c, r - 1)) || (r + 1 < H && !g.isBlocked(c, r + 1));
-    };
-    struct Run
-    {
-        int c0, c1, r0, r1;
-    };
-    std::vector<Run> done, open;  // open: runs that may still grow downwards
-    for (int r = 0; r < H; ++r)
-    {
-        std::vector<Run> rowRuns;
-        for (int c = 0; c < W;)
-        {
-            if (!boundary(c, r))
-            {
-                ++c;
-                continue;
-            }
-            int e = c;
-            while (e + 1 < W && boundary(e + 1, r)) ++e;
-            rowRuns.push_back({c, e, r, r});
-            c = e + 1;
-        }
-        // merge with open runs of the same extent ending on the previous row (both sorted by c0)
-        std::vector<Run> next;
-        std::size_t k = 0;
-        for (Run &rr : rowRuns)
-        {
-            while (k < open.size() && open[k].c0 < rr.c0) done.push_back(open[k++]);
-            if (k < open.size() && open[k].c0 == rr.c0 && open[k].c1 == rr.c1)
-            {
-                Run m = open[k++];
-                m.r1 = r;
-                next.push_back(m);
-            }
-            else
-                next.push_back(rr);
-        }
-        while (k < open.size()) done.push_back(open[k++]);
-        open.swap(next);
-    }
-    done.insert(done.end(), open.begin(), open.end());
-
-    const double res = g.resolution();
-    for (const Run &run : done)
-    {
-        const double x0 = g.originX() + run.c0 * res, x1 = g.originX() + (run.c1 + 1) * res;
-        const double yTop = g.cellCenterY(run.r0) + res / 2, yBot = g.cellCenterY(run.r1) - res / 2;
-        objects_.push_back(makeBox((x0 + x1) / 2, (yTop + yBot) / 2, x1 - x0, yTop - yBot));
-    }
-    boxCount_ = objects_.size();
-    // walls around the map, thick enough that no footprint can reach past them
-    const double t = 2.0 * rOut_ + 1.0;
-    const double mx0 = g.originX(), my0 = g.originY(), mx1 = mx0 + g.sizeX(), my1 = my0 + g.sizeY();
-    objects_.push_back(makeBox(mx0 - t / 2, (my0 + my1) / 2, t, g.sizeY() + 2 * t));
-    objects_.push_back(makeBox(mx1 + t / 2, (my0 + my1) / 2, t, g.sizeY() + 2 * t));
-    objects_.push_back(makeBox((mx0 + mx1) / 2, my0 - t / 2, g.sizeX() + 2 * t, t));
-    objects_.push_back(makeBox((mx0 + mx1) / 2, my1 + t / 2, g.sizeX() + 2 * t, t));
-
-    manager_ = std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
-    std::vector<fcl::CollisionObjectd *> raw;
-    raw.reserve(objects_.size());
-    for (auto &o : objects_) raw.push_back(o.get());
-    manager_->registerObjects(raw);
-    manager_->setup();
+    // The exact check's obstacles: FCL boxes over the obstacle boundary cells, made per tile
+    // of the map on the first exact check that reaches the tile (a 24 M-cell map has 170 000
+    // such boxes, 0.4-0.6 s to make and sort into a tree, where a path's checks reach a few
+    // hundred tiles), and walls round the map thick enough that no footprint reaches past them.
+    exact_ = std::make_unique<ExactTiles>(*grid_, 2.0 * rOut_ + 1.0);
 }
+
 
 FootprintChecker::~FootprintChecker() = default;
 
@@ -207,9 +145,7 @@ bool FootprintChecker::exactBody(const Body &b, double x, double y, double yaw) 
         {
             o->setTransform(tf);
             o->computeAABB();
-            fcl::DefaultCollisionData<double> data;
-            manager_->collide(o.get(), &data, fcl::DefaultCollisionFunction<double>);
-            if (data.result.isCollision()) return false;
+            if (collidesExact(o.get())) return false;
         }
         return true;
     }
@@ -232,9 +168,7 @@ bool FootprintChecker::exactBody(const Body &b, double x, double y, double yaw) 
     tf.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     cache.obj->setTransform(tf);
     cache.obj->computeAABB();
-    fcl::DefaultCollisionData<double> data;
-    manager_->collide(cache.obj.get(), &data, fcl::DefaultCollisionFunction<double>);
-    return !data.result.isCollision();
+    return !collidesExact(cache.obj.get());
 }
 
 bool FootprintChecker::validBody(const Body &b, double x, double y, double yaw) const

@@ -1,5 +1,7 @@
 #include "gridcar/map/OccupancyGrid.h"
 
+#include "gridcar/core/Memory.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -38,6 +40,7 @@ OccupancyGrid::OccupancyGrid(int width, int height, double resolution, CellState
     width_ = width;
     height_ = height;
     resolution_ = resolution;
+    reserveHuge(cells_, std::size_t(width) * std::size_t(height));
     cells_.assign(std::size_t(width) * std::size_t(height), fill);
 }
 

@@ -208,7 +208,9 @@ public:
         std::uint64_t fastFree{0}, fastCollision{0}, exact{0}, discFree{0};
     };
     Stats stats() const;
-    std::size_t obstacleBoxCount() const { return boxCount_; }
+    /// The FCL boxes the exact check tests against over the whole map (they are made per tile on
+    /// first use; this counts them all, a scan of the map).
+    std::size_t obstacleBoxCount() const;
 
 private:
     bool cellBlockedAt(double x, double y) const;
@@ -240,6 +242,8 @@ private:
     /// 1 proven free, 0 proven blocked, -1 undecided by the distance field.
     int quickBody(const Body &b, double x, double y, double yaw, double cs, double sn) const;
     bool exactBody(const Body &b, double x, double y, double yaw) const;
+    /// True if the FCL object @p o (its AABB computed) meets an obstacle box or a wall.
+    bool collidesExact(fcl::CollisionObject<double> *o) const;
     /// Exact test of the rectangle centred at (cx, cy) with unit axis (cs, sn), half-length a
     /// and half-width b, by recursive halving against the distance field down to a cell, then
     /// a separating-axis test against each blocked cell square in reach.
@@ -265,9 +269,8 @@ private:
     std::vector<std::array<double, 2>> provenDiscs_;
     double provenR_{0};
     double sweepFraction_{0.5};
-    std::size_t boxCount_{0};
-    std::unique_ptr<fcl::BroadPhaseCollisionManager<double>> manager_;
-    std::vector<std::unique_ptr<fcl::CollisionObject<double>>> objects_;
+    struct ExactTiles;
+    std::unique_ptr<ExactTiles> exact_;
     mutable std::atomic<std::uint64_t> nFastFree_{0}, nFastCollision_{0}, nExact_{0}, nDiscFree_{0};
 };
 

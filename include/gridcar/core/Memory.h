@@ -7,12 +7,32 @@
 #include <cstdint>
 #include <cstdlib>
 #include <new>
+#include <vector>
 
 namespace gridcar
 {
 /// Resident set size of this process in MB (Linux: /proc/self/statm), or -1 where it cannot be
 /// read (the memory bound then does not apply).
 double residentMegabytes();
+
+/// Asks the system to back [p, p + bytes) with huge pages where it can (Linux transparent huge
+/// pages in `madvise` mode, Debian's default): a grid-sized array of a 24 M-cell map is then
+/// committed in 2 MB pages, not 4 KB ones, and its first write costs a few hundred page faults
+/// instead of tens of thousands (on a virtual machine each fault is dear: writing 100 MB fresh
+/// took 0.26-0.45 s with 4 KB pages, 0.01 s with huge ones). Only the 2 MB-aligned interior is
+/// advised; small ranges, other systems and a refusal are left as they are. Call it before the
+/// memory is first written.
+void adviseHugePages(void *p, std::size_t bytes);
+
+/// v.reserve(n) with the new storage advised for huge pages (adviseHugePages()) before anything
+/// is written to it; v must be empty (a vector with contents would copy them into the new storage).
+template <class T>
+void reserveHuge(std::vector<T> &v, std::size_t n)
+{
+    if (n <= v.capacity()) return;
+    v.reserve(n);
+    adviseHugePages(v.data(), n * sizeof(T));
+}
 
 /**
  * @brief A byte array that starts as zeros, from calloc: a large one (the grid planners' move
