@@ -24,7 +24,7 @@ std::shared_ptr<const DistanceField> campusField()
     return f;
 }
 
-/// Poses whose isValid() answer comes from the fast path (fast = true) or needs FCL.
+/// Poses whose isValid() answer comes from the fast path (fast = true) or needs the exact test.
 std::vector<Pose2> poses(const FootprintChecker &fc, bool fast, std::size_t n)
 {
     const OccupancyGrid &g = fc.grid();
@@ -74,7 +74,7 @@ static void BM_FootprintCheck(benchmark::State &state)
         valid += fc.isValid(p.x, p.y, p.yaw);
     }
     benchmark::DoNotOptimize(valid);
-    state.SetLabel(fast ? "fast path (distance field)" : "exact path (FCL)");
+    state.SetLabel(fast ? "fast path (distance field)" : "exact path (distance-field halving)");
     state.counters["checks_per_s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FootprintCheck)->Arg(1)->Arg(0);

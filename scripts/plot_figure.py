@@ -89,6 +89,12 @@ def nice_length(span):
     return k
 
 
+def has_unknown_cells(img):
+    """True if the map picture has a cell drawn as unknown (grey 190, as gridcar draws them)."""
+    rgb = img[..., :3].astype(float) * (255.0 if img.dtype.kind == "f" else 1.0)
+    return bool((abs(rgb - 190.0) < 0.5).all(axis=-1).any())
+
+
 def main():
     fig_spec, out = sys.argv[1], sys.argv[2]
     with open(fig_spec) as f:
@@ -96,7 +102,8 @@ def main():
     x0, x1, y0, y1 = spec["extent"]
     w, h = max(x1 - x0, 1e-9), max(y1 - y0, 1e-9)
     fig, ax = plt.subplots(figsize=(12.5, min(14, max(4, 9 * h / w)) + 0.8))
-    ax.imshow(mpimg.imread(spec["image"]), extent=[x0, x1, y0, y1], interpolation="nearest")
+    img = mpimg.imread(spec["image"])
+    ax.imshow(img, extent=[x0, x1, y0, y1], interpolation="nearest")
     veh = spec.get("vehicle")
     handles = []
     any_reverse = False
@@ -132,7 +139,8 @@ def main():
     if spec.get("costs"):
         handles.append(mpatches.Patch(color=spec["costs"]["colour"], label=spec["costs"]["label"]))
     handles.append(mpatches.Patch(facecolor="black", label="occupied"))
-    handles.append(mpatches.Patch(facecolor=(190 / 255,) * 3, label="unknown"))
+    if has_unknown_cells(img):
+        handles.append(mpatches.Patch(facecolor=(190 / 255,) * 3, label="unknown"))
     bar = nice_length(w)
     ax.add_artist(AnchoredSizeBar(ax.transData, bar, "{:g} m".format(bar), "lower right", pad=0.4, sep=4,
                                   frameon=True, size_vertical=h / 200.0))

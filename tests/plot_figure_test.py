@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks scripts/plot_figure.py: reverse segments found from the poses' headings, scale-bar
-lengths, and a figure with a forward and a reverse piece, a vehicle, markers and a free goal
-heading drawn to a PNG. Usage: plot_figure_test.py SOURCE_DIR WORK_DIR"""
+lengths, the unknown cells' legend entry only where the picture has some, and a figure with a
+forward and a reverse piece, a vehicle, markers and a free goal heading drawn to a PNG. Usage: plot_figure_test.py SOURCE_DIR WORK_DIR"""
 import json
 import math
 import os
@@ -23,6 +23,14 @@ def main():
     for span, bar in ((73, 10), (100, 20), (4.9, 0.5), (1000, 200), (260, 50)):
         assert abs(plot_figure.nice_length(span) - bar) < 1e-9, (span, plot_figure.nice_length(span))
     import matplotlib.pyplot as plt
+    import numpy as np
+    # the legend names unknown cells only where the picture has some (grey 190)
+    grey = np.full((2, 2, 3), 255, np.uint8)
+    assert not plot_figure.has_unknown_cells(grey)
+    grey[1, 0] = 190
+    assert plot_figure.has_unknown_cells(grey)
+    assert plot_figure.has_unknown_cells(grey.astype(np.float32) / 255.0)
+    assert not plot_figure.has_unknown_cells(np.full((2, 2, 4), 0.5, np.float32))
     img = os.path.join(work, "map.png")
     plt.imsave(img, [[1.0, 1.0], [1.0, 0.0]], cmap="gray")
     spec = {"title": "test", "image": img, "extent": [-2, 8, -3, 3],
