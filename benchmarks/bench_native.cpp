@@ -190,9 +190,11 @@ void nativeMap(const Options &o)
         const double rss0 = peakRssMb();
         auto t0 = std::chrono::steady_clock::now();
         auto grid = std::make_shared<const OccupancyGrid>(loadMap(o.map));
+        const double loadSec = seconds(t0);
+        t0 = std::chrono::steady_clock::now();
         GridSetup setup = makeGridSetup(grid, v);
         const double setupSec = seconds(t0);
-        std::fprintf(stderr, "%s: set-up %.2f s\n", vname.c_str(), setupSec);
+        std::fprintf(stderr, "%s: map loaded in %.2f s, set-up %.2f s\n", vname.c_str(), loadSec, setupSec);
         const auto pairs = randomPairs(*setup.checker, o.pairs, o.seed, 60.0, 250.0);
         std::vector<Row> rows;
         std::vector<std::pair<Pose2, Pose2>> posesForBit;
@@ -226,8 +228,8 @@ void nativeMap(const Options &o)
             }
             rows.push_back(row);
         }
-        std::printf("\n### %s, %s (%zu pairs, limit %.0f s, set-up %.2f s, peak RSS %.0f MB -> %.0f MB)\n\n", o.map.c_str(),
-                    vname.c_str(), pairs.size(), o.limit, setupSec, rss0, peakRssMb());
+        std::printf("\n### %s, %s (%zu pairs, limit %.0f s, map load %.2f s, set-up %.2f s, peak RSS %.0f MB -> %.0f MB)\n\n", o.map.c_str(),
+                    vname.c_str(), pairs.size(), o.limit, loadSec, setupSec, rss0, peakRssMb());
         printRows(rows);
         if (posesForBit.empty()) continue;
         std::printf("\nBIT* on Reeds-Shepp (R_min %.2f m), %.0f s, from the start pose and to the end pose of improved-astar "
