@@ -20,7 +20,6 @@ namespace gridcar
 {
 using detail::makeBox;
 
-
 FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, std::shared_ptr<const DistanceField> field,
                                    const VehicleParams &vehicle)
   : grid_(std::move(grid)), field_(std::move(field)), vehicle_(vehicle)
@@ -79,7 +78,6 @@ FootprintChecker::FootprintChecker(std::shared_ptr<const OccupancyGrid> grid, st
     // hundred tiles), and walls round the map thick enough that no footprint reaches past them.
     exact_ = std::make_unique<ExactTiles>(*grid_, 2.0 * rOut_ + 1.0);
 }
-
 
 FootprintChecker::~FootprintChecker() = default;
 
