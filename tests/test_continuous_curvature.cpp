@@ -29,8 +29,10 @@ namespace ob = ompl::base;
 namespace
 {
 /// Straight @p a metres, an arc of radius @p r turning by @p turn (signed), straight @p b
-/// metres, sampled every @p ds: the curvature jumps 0 -> 1/r -> 0, as a lattice path's does.
-std::vector<Pose2> straightArcStraight(double a, double r, double turn, double b, double ds, Pose2 p = {0, 0, 0})
+/// metres, sampled every @p ds: the curvature jumps 0 -> 1/r -> 0, as a lattice path's does;
+/// then @p tail metres of arc at 1/r in two steps (a Reeds-Shepp shot landing on its goal).
+std::vector<Pose2> straightArcStraight(double a, double r, double turn, double b, double ds, Pose2 p = {0, 0, 0},
+                                       double tail = 0)
 {
     std::vector<Pose2> out{p};
     auto go = [&](double len, double k) {
@@ -51,6 +53,7 @@ std::vector<Pose2> straightArcStraight(double a, double r, double turn, double b
     go(a, 0.0);
     go(std::abs(turn) * r, turn > 0 ? 1.0 / r : -1.0 / r);
     go(b, 0.0);
+    if (tail > 0) go(tail, 1.0 / r), go(tail / 2, 1.0 / r);
     return out;
 }
 
@@ -129,6 +132,20 @@ TEST(ContinuousCurvature, QuinticAgreesWithEigenSplines)
     EXPECT_NEAR(std::atan2(d1[1][1], d1[1][0]), 1.1, 1e-12);
     EXPECT_NEAR(d1[0][0], 6.0, 1e-12);
     EXPECT_NEAR(d1[0][1], 2.5, 1e-12);
+}
+
+// A turn, 1 m of straight, and 2 cm at full lock onto the goal: the last jump has room only if
+// it is smoothed with the turn's (it was left in place, 45 times over the rate)
+TEST(ContinuousCurvature, AShortArcOntoTheGoalIsSmoothedWithTheTurnBeforeIt)
+{
+    const double kmax = 0.53, sigma = 0.4;
+    for (double b : {1.0, 1.4, 1.7, 2.0, 2.5})
+    {
+        const std::vector<Pose2> in = straightArcStraight(10.0, 1.01 / kmax, -M_PI / 4, b, 0.05, {2, 1, 0.3}, 0.011);
+        const CurvatureSmoothing r = smoothCurvature(in, options(kmax, sigma));
+        EXPECT_LE(curvatureRateProfile(r.path).maxRate, 1.02 * sigma) << b;
+        EXPECT_DOUBLE_EQ(r.path.back().yaw, in.back().yaw);
+    }
 }
 
 // A 90-degree turn at full lock between long straights (a lattice corner): the jumps are

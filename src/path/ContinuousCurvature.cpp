@@ -216,14 +216,24 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
             r.cancelled = true;
             break;
         }
-        // the stretch: the jumps within reach of each other, each wanting |dk| / sigma of room
-        const double need = 0.95 * std::abs(p.k[v] - p.k[v - 1]) / o.maxCurvatureRate;
-        double lo = p.s[v] - need, hi = p.s[v] + need;
-        std::size_t w = v + 1;
-        for (; w + 1 < n && p.s[w] <= hi + kArcTie; ++w)
-            if (p.bad[w]) hi = std::max(hi, p.s[w] + 0.95 * std::abs(p.k[w] - p.k[w - 1]) / o.maxCurvatureRate);
+        // the stretch: the jumps within reach of each other, each wanting |dk| / sigma of room;
+        // first together with the jumps that follow within the widest room a jump may want (a
+        // stretch placed first would otherwise take the room the next one needs: a short
+        // piece of arc landing on the goal), then with those inside its own room only
+        const auto need = [&](std::size_t i) { return 0.95 * std::abs(p.k[i] - p.k[i - 1]) / o.maxCurvatureRate; };
+        const double lo = p.s[v] - need(v);
+        double hiOwn = p.s[v] + need(v), hiJoined = hiOwn;
+        for (std::size_t w = v + 1; w + 1 < n && p.s[w] <= hiOwn + kArcTie; ++w)
+            if (p.bad[w]) hiOwn = std::max(hiOwn, p.s[w] + need(w));
+        const double widest = 2 * 0.95 * 2 * o.maxCurvature / o.maxCurvatureRate;  // |dk| <= 2 K_max
+        for (std::size_t w = v + 1; w + 1 < n && p.s[w] <= hiJoined + widest + kArcTie; ++w)
+            if (p.bad[w]) hiJoined = std::max(hiJoined, p.s[w] + need(w));
         ++r.stretches;
         bool placed = false;
+        for (int joined = 1; joined >= 0 && !placed; --joined)
+        {
+        const double hi = joined ? hiJoined : hiOwn;
+        if (!joined && hiOwn == hiJoined) break;
         for (double f : {1.0, 1.5, 2.2, 3.2, 4.5, 6.5})
         {
             const double c = 0.5 * (lo + hi), h = 0.5 * (hi - lo) * f;
@@ -248,6 +258,7 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
                 placed = !mid.empty() && writer.replace(a, b, mid, o.free);
             }
             if (placed || (a <= writer.done() && b + 1 >= n)) break;
+        }
         }
         if (placed)
             ++r.replaced;
