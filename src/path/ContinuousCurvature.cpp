@@ -216,18 +216,25 @@ std::vector<Pose2> smoothPiece(const std::vector<Pose2> &poses, bool backward, c
             r.cancelled = true;
             break;
         }
-        // the stretch: the jumps within reach of each other, each wanting |dk| / sigma of room;
-        // first together with the jumps that follow within the widest room a jump may want (a
-        // stretch placed first would otherwise take the room the next one needs: a short
-        // piece of arc landing on the goal), then with those inside its own room only
+        // the stretch: the jumps within reach of each other, each wanting |dk| / sigma of room.
+        // A jump near the piece's end has its room on one side only, which a stretch placed
+        // before it may have taken (a Reeds-Shepp shot's last 2 cm at full lock, a metre past
+        // a turn): where one follows within the widest room a jump may want, it is tried
+        // together with this one first, then this one alone
         const auto need = [&](std::size_t i) { return 0.95 * std::abs(p.k[i] - p.k[i - 1]) / o.maxCurvatureRate; };
         const double lo = p.s[v] - need(v);
         double hiOwn = p.s[v] + need(v), hiJoined = hiOwn;
         for (std::size_t w = v + 1; w + 1 < n && p.s[w] <= hiOwn + kArcTie; ++w)
             if (p.bad[w]) hiOwn = std::max(hiOwn, p.s[w] + need(w));
         const double widest = 2 * 0.95 * 2 * o.maxCurvature / o.maxCurvatureRate;  // |dk| <= 2 K_max
+        bool nearEnd = p.s[n - 1] - p.s[v] < need(v);
         for (std::size_t w = v + 1; w + 1 < n && p.s[w] <= hiJoined + widest + kArcTie; ++w)
-            if (p.bad[w]) hiJoined = std::max(hiJoined, p.s[w] + need(w));
+            if (p.bad[w])
+            {
+                hiJoined = std::max(hiJoined, p.s[w] + need(w));
+                nearEnd = nearEnd || p.s[n - 1] - p.s[w] < need(w);
+            }
+        if (!nearEnd) hiJoined = hiOwn;
         ++r.stretches;
         bool placed = false;
         for (int joined = 1; joined >= 0 && !placed; --joined)
