@@ -151,3 +151,58 @@ TEST(DistanceField, VoronoiFieldFollowsDolgov)
     while (!f.isVoronoi(40, vr)) ++vr;
     EXPECT_NEAR(f.voronoiField(g.cellCenterX(40), g.cellCenterY(vr), p), 0.0, 1e-9);
 }
+
+// update(): after random edits (obstacles added and removed, rectangles and single cells, a
+// map with unknown cells, one wider than 64 columns), the field equals a full recomputation
+// cell for cell, the window returned holds every cell that changed, and the GVD follows.
+TEST(DistanceField, UpdateAfterRandomEditsEqualsAFullRecomputation)
+{
+    for (unsigned seed : {1u, 2u, 3u})
+    {
+        SCOPED_TRACE(seed);
+        OccupancyGrid g = randomGrid(seed == 3 ? 150 : 61, seed == 2 ? 90 : 47, 0.02 * seed, seed);
+        DistanceField f(g);
+        if (seed == 1) ASSERT_GT(f.voronoiCellCount(), 0u);  // built before the edits: built again after
+        std::mt19937 rng(seed * 7919u);
+        for (int edit = 0; edit < 12; ++edit)
+        {
+            std::uniform_int_distribution<int> col(0, g.width() - 1), row(0, g.height() - 1), size(0, 9);
+            CellWindow w;
+            w.col0 = col(rng);
+            w.row0 = row(rng);
+            w.col1 = std::min(g.width() - 1, w.col0 + size(rng));
+            w.row1 = std::min(g.height() - 1, w.row0 + size(rng));
+            const CellState to = edit % 3 == 2 ? CellState::Free : CellState::Occupied;
+            for (int r = w.row0; r <= w.row1; ++r)
+                for (int c = w.col0; c <= w.col1; ++c) g.set(c, r, (c + r + edit) % 4 == 0 ? CellState::Unknown : to);
+            std::vector<float> before(std::size_t(g.width() * g.height()));
+            for (int r = 0; r < g.height(); ++r)
+                for (int c = 0; c < g.width(); ++c) before[std::size_t(r * g.width() + c)] = float(f.cellDistance(c, r));
+            const CellWindow moved = f.update(g, w);
+            const DistanceField full(g);
+            for (int r = 0; r < g.height(); ++r)
+                for (int c = 0; c < g.width(); ++c)
+                {
+                    ASSERT_EQ(f.cellDistance(c, r), full.cellDistance(c, r)) << "edit " << edit << " cell " << c << "," << r;
+                    const bool inside = c >= moved.col0 && c <= moved.col1 && r >= moved.row0 && r <= moved.row1;
+                    if (!inside) ASSERT_EQ(float(f.cellDistance(c, r)), before[std::size_t(r * g.width() + c)]);
+                }
+            EXPECT_EQ(f.maxDistance(), full.maxDistance());
+        }
+        const DistanceField full(g);
+        EXPECT_EQ(f.voronoiCellCount(), full.voronoiCellCount());
+        for (int r = 0; r < g.height(); ++r)
+            for (int c = 0; c < g.width(); ++c) ASSERT_EQ(f.cellVoronoiDistance(c, r), full.cellVoronoiDistance(c, r));
+    }
+}
+
+TEST(DistanceField, UpdateRejectsAnotherSizeAndAWindowOffTheMap)
+{
+    OccupancyGrid g = randomGrid(20, 10, 0.1, 4);
+    DistanceField f(g);
+    EXPECT_THROW(f.update(randomGrid(21, 10, 0.1, 4), {0, 0, 1, 1}), std::invalid_argument);
+    EXPECT_THROW(f.update(g, {0, 0, 20, 3}), std::invalid_argument);
+    EXPECT_THROW(f.update(g, {-1, 0, 2, 3}), std::invalid_argument);
+    EXPECT_TRUE(f.update(g, {}).empty());
+    EXPECT_TRUE(f.update(g, {0, 0, 19, 9}).empty());  // nothing changed
+}

@@ -1,6 +1,7 @@
 #include "gridcar/distance/DistanceField.h"
 
 #include "gridcar/core/Memory.h"
+#include "distance/detail/Envelope.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,96 +13,15 @@ namespace gridcar
 {
 namespace
 {
-constexpr std::int64_t kInf = std::int64_t(1) << 50;
-
-/// Felzenszwalb-Huttenlocher lower envelope in 1D over positions 0..n-1 with costs f
-/// (kInf = no site). Writes d[q] = min_p (q-p)^2 + f[p] and arg[q] = that p (-1 if no site).
-struct Envelope
-{
-    std::vector<int> v;
-    std::vector<double> z;
-    void resize(int n)
-    {
-        v.resize(std::size_t(n));
-        z.resize(std::size_t(n) + 1);
-    }
-    void run(const std::int64_t *f, int n, std::int64_t *d, int *arg)
-    {
-        int k = -1;
-        for (int q = 0; q < n; ++q)
-        {
-            if (f[q] >= kInf) continue;
-            if (k < 0)
-            {
-                k = 0;
-                v[0] = q;
-                z[0] = -1e300;
-                z[1] = 1e300;
-                continue;
-            }
-            double s;
-            while (true)
-            {
-                const int p = v[std::size_t(k)];
-                s = (double(f[q] + std::int64_t(q) * q) - double(f[p] + std::int64_t(p) * p)) / (2.0 * (q - p));
-                if (s <= z[std::size_t(k)] && k > 0) --k;
-                else break;
-            }
-            if (s <= z[std::size_t(k)])  // k == 0 and the new parabola dominates everywhere
-            {
-                v[0] = q;
-                z[0] = -1e300;
-                z[1] = 1e300;
-                continue;
-            }
-            ++k;
-            v[std::size_t(k)] = q;
-            z[std::size_t(k)] = s;
-            z[std::size_t(k) + 1] = 1e300;
-        }
-        if (k < 0)
-        {
-            for (int q = 0; q < n; ++q)
-            {
-                d[q] = kInf;
-                arg[q] = -1;
-            }
-            return;
-        }
-        int j = 0;
-        for (int q = 0; q < n; ++q)
-        {
-            while (z[std::size_t(j) + 1] < q) ++j;
-            const int p = v[std::size_t(j)];
-            d[q] = std::int64_t(q - p) * (q - p) + f[p];
-            arg[q] = p;
-        }
-    }
-};
+using detail::Envelope;
+using detail::kInf;
+using detail::parallelRanges;
 
 /// Reusable buffers of edt2d() (the transform runs twice per field: allocate once).
 struct EdtWorkspace
 {
     std::vector<int> nearRow, nearCol, tmp;
 };
-
-/// Runs @p part(begin, end) over [0, n) split among the machine's threads (up to 4) where n
-/// items of @p work each make it worth it, else at once on this thread.
-template <class Part>
-void parallelRanges(int n, std::size_t work, const Part &part)
-{
-    const unsigned hw = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
-    const int parts = work < (std::size_t(1) << 20) ? 1 : int(std::min<unsigned>(hw, unsigned(std::max(1, n))));
-    if (parts <= 1)
-    {
-        part(0, n);
-        return;
-    }
-    std::vector<std::thread> threads;
-    for (int k = 1; k < parts; ++k) threads.emplace_back(part, n * k / parts, n * (k + 1) / parts);
-    part(0, n / parts);
-    for (std::thread &t : threads) t.join();
-}
 
 /// Exact 2D EDT of a site mask over a W x H grid, in metres (cells * res) into @p out. With
 /// @p borderSites the ring just outside the grid is made of sites too. With @p wantNearest the
@@ -222,7 +142,7 @@ DistanceField::DistanceField(const OccupancyGrid &grid)
 
 void DistanceField::voronoiReady() const
 {
-    std::call_once(voronoiOnce_, [this] { buildVoronoi(); });
+    std::call_once(*voronoiOnce_, [this] { buildVoronoi(); });
 }
 
 void DistanceField::buildVoronoi() const

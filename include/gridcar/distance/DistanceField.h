@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -16,6 +17,14 @@ struct VoronoiFieldParams
 {
     double alpha{2.0};      ///< falloff rate, metres
     double dOMax{5.0};      ///< obstacle influence distance d_O^max, metres
+};
+
+/// A rectangle of cells, inclusive (columns col0..col1, rows row0..row1, row 0 at the top as in
+/// OccupancyGrid); empty when col0 > col1 or row0 > row1.
+struct CellWindow
+{
+    int col0{0}, row0{0}, col1{-1}, row1{-1};
+    bool empty() const { return col0 > col1 || row0 > row1; }
 };
 
 /**
@@ -83,6 +92,25 @@ public:
         voronoiReady();
         return voronoiCount_;
     }
+    /**
+     * @brief Brings d_O up to date after cells of the grid changed (became blocked or free)
+     * within @p changed, and returns the window of cells whose d_O changed (empty if none).
+     *
+     * @p grid has this field's size; cells outside @p changed must be as they were when the
+     * field was last computed or updated. The result equals a full recomputation: the
+     * transform's column pass is redone for the changed columns only, and its row pass for
+     * the rows where a changed column's distances moved (the rest of the field keeps its
+     * values). That needs every column's pass kept (prepareUpdates()); without it, the first
+     * update keeps it and redoes every row. The GVD and d_V are built again on next use. Not
+     * to be called while other threads read the field.
+     * @throws std::invalid_argument if @p grid's size differs or @p changed leaves the map.
+     */
+    CellWindow update(const OccupancyGrid &grid, const CellWindow &changed);
+    /// Keeps the transform's column pass of every cell for update() (16 bits a cell, 32 on maps
+    /// of 65 535 rows or more): call it with the grid the field was computed from, before cells
+    /// change. 0.1-0.2 s and 48 MB on a 24 M-cell map.
+    void prepareUpdates(const OccupancyGrid &grid);
+
     /// Largest d_O over the map, metres.
     double maxDistance() const { return maxDist_; }
 
@@ -115,7 +143,11 @@ private:
     /// map they cost more than d_O itself.
     void voronoiReady() const;
     void buildVoronoi() const;
-    mutable std::once_flag voronoiOnce_;
+    /// Column pass of every cell (distance in cells to the nearest blocked cell of its column,
+    /// the map border included) and the largest d_O per row: made by the first update().
+    struct Columns;
+    std::shared_ptr<Columns> columns_;
+    mutable std::unique_ptr<std::once_flag> voronoiOnce_{std::make_unique<std::once_flag>()};
     mutable std::size_t voronoiCount_{0};
     mutable std::vector<float> vdist_;           ///< d_V per cell, metres
     mutable std::vector<std::uint8_t> voronoi_;  ///< 1 on GVD cells
