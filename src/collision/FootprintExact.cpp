@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 
 #include <fcl/broadphase/default_broadphase_callbacks.h>
 
@@ -107,6 +108,18 @@ const FootprintChecker::ExactTiles::Tile &FootprintChecker::ExactTiles::tile(con
         tile.manager->setup();
     });
     return tile;
+}
+
+void FootprintChecker::ExactTiles::reset(const CellWindow &cells)
+{
+    if (cells.empty()) return;
+    for (int ty = cells.row0 / kTile; ty <= cells.row1 / kTile; ++ty)
+        for (int tx = cells.col0 / kTile; tx <= cells.col1 / kTile; ++tx)
+        {
+            Tile &t = tiles[std::size_t(ty) * std::size_t(tilesX) + std::size_t(tx)];
+            t.~Tile();  // (a once_flag is made anew, not reset)
+            new (&t) Tile();
+        }
 }
 
 bool FootprintChecker::collidesExact(fcl::CollisionObjectd *o) const

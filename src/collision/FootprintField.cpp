@@ -3,6 +3,7 @@
 /// (circumscribed circle, disc cover, inscribed discs) and the exact halving test.
 #include "gridcar/collision/FootprintChecker.h"
 
+#include "collision/detail/ExactTiles.h"
 #include "collision/detail/Polygon.h"
 
 #include <algorithm>
@@ -228,13 +229,34 @@ void FootprintChecker::buildDiscBits()
     const int W = grid_->width(), H = grid_->height();
     discBits_.assign((std::size_t(W) * std::size_t(H) + 63) / 64, 0);
     clearBits_.assign(discBits_.size(), 0);
-    for (int r = 0; r < H; ++r)
-        for (int c = 0; c < W; ++c)
+    setDiscBits({0, 0, W - 1, H - 1});
+}
+
+void FootprintChecker::setDiscBits(const CellWindow &w)
+{
+    const int W = grid_->width();
+    for (int r = w.row0; r <= w.row1; ++r)
+        for (int c = w.col0; c <= w.col1; ++c)
         {
             const std::size_t k = std::size_t(r) * std::size_t(W) + std::size_t(c);
-            if (discBlockedCell(c, r)) discBits_[k / 64] |= std::uint64_t(1) << (k % 64);
-            if (discsClearAtEveryYaw(field_->cellDistance(c, r))) clearBits_[k / 64] |= std::uint64_t(1) << (k % 64);
+            const std::uint64_t bit = std::uint64_t(1) << (k % 64);
+            discBits_[k / 64] = discBlockedCell(c, r) ? discBits_[k / 64] | bit : discBits_[k / 64] & ~bit;
+            clearBits_[k / 64] = discsClearAtEveryYaw(field_->cellDistance(c, r)) ? clearBits_[k / 64] | bit : clearBits_[k / 64] & ~bit;
         }
+}
+
+void FootprintChecker::cellsChanged(const CellWindow &cells, const CellWindow &field)
+{
+    ++mapVersion_;
+    const int W = grid_->width(), H = grid_->height();
+    const auto clip = [&](const CellWindow &w) {
+        return CellWindow{std::max(0, w.col0), std::max(0, w.row0), std::min(W - 1, w.col1), std::min(H - 1, w.row1)};
+    };
+    // a cell's bits read its own state and distance
+    for (const CellWindow &w : {clip(cells), clip(field)})
+        if (!w.empty()) setDiscBits(w);
+    // a box covers boundary cells: a change there moves its 4-neighbours' boundary too
+    if (exact_ && !cells.empty()) exact_->reset(clip({cells.col0 - 1, cells.row0 - 1, cells.col1 + 1, cells.row1 + 1}));
 }
 
 bool FootprintChecker::discsClearAtEveryYawAt(double x, double y) const

@@ -208,6 +208,17 @@ public:
         std::uint64_t fastFree{0}, fastCollision{0}, exact{0}, discFree{0};
     };
     Stats stats() const;
+    /**
+     * @brief After cells of its grid changed within @p cells and its distance field was
+     * brought up to date (DistanceField::update() returned @p field): the per-cell tests and
+     * the exact check's obstacle boxes made again where they read those cells, so that the
+     * checker answers as one made anew on the changed map. Not while other threads check.
+     */
+    void cellsChanged(const CellWindow &cells, const CellWindow &field);
+    /// How many times cellsChanged() was called: a planner that sees it move forgets what it
+    /// learnt of the old map (not its set-up).
+    std::uint64_t mapVersion() const { return mapVersion_; }
+
     /// The FCL boxes the exact check tests against over the whole map (they are made per tile on
     /// first use; this counts them all, a scan of the map).
     std::size_t obstacleBoxCount() const;
@@ -237,6 +248,8 @@ private:
     bool discBlockedCell(int col, int row) const;
     /// discBits_ from discBlockedCell() and clearBits_ from discsClearAtEveryYaw() at every cell.
     void buildDiscBits();
+    /// The same bits over the cells of @p w only.
+    void setDiscBits(const CellWindow &w);
     /// Bit @p k (row-major cell index) of @p bits.
     static bool cellBit(const std::vector<std::uint64_t> &bits, std::size_t k) { return (bits[k / 64] >> (k % 64)) & 1u; }
     /// 1 proven free, 0 proven blocked, -1 undecided by the distance field.
@@ -271,6 +284,7 @@ private:
     double sweepFraction_{0.5};
     struct ExactTiles;
     std::unique_ptr<ExactTiles> exact_;
+    std::uint64_t mapVersion_{0};
     mutable std::atomic<std::uint64_t> nFastFree_{0}, nFastCollision_{0}, nExact_{0}, nDiscFree_{0};
 };
 

@@ -33,6 +33,8 @@ struct FootprintChecker::ExactTiles
 
     /// Tile (tx, ty) of @p g, its boxes made on the first call (thread-safe).
     const Tile &tile(const OccupancyGrid &g, int tx, int ty);
+    /// The tiles over @p cells made again on their next use (not while others read them).
+    void reset(const CellWindow &cells);
 };
 
 }  // namespace gridcar
