@@ -58,6 +58,7 @@ void GridPlanner::setup()
         support_.rememberWorld(*si_);
         collision_ = checker_ ? std::shared_ptr<CarCollision>(std::make_shared<FootprintCollision>(*checker_))
                               : std::shared_ptr<CarCollision>(std::make_shared<SpaceCollision>(si_));
+        mapVersion_ = checker_ ? checker_->mapVersion() : 0;
     }
     genericVehicle_ = genericVehicle();
     space_ = std::dynamic_pointer_cast<GridSE2StateSpace>(si_->getStateSpace());
@@ -82,6 +83,14 @@ ompl::base::PlannerStatus GridPlanner::solve(const ompl::base::PlannerTerminatio
         setup_ = false;
     }
     checkValidity();
+    if (checker_ && collision_ && checker_->mapVersion() != mapVersion_)
+    {
+        // cells changed (FootprintChecker::cellsChanged()): the set-up stays, what the searches
+        // learnt of the old cells goes
+        mapVersion_ = checker_->mapVersion();
+        collision_->mapChanged();
+        mapChangedFamily();
+    }
     dataStates_.clear();  // PlannerData states are cached by search state, which a new search renumbers
     const ompl::base::PlannerTerminationCondition ptc = support_.withMemoryBound(timeLimit, params_.maxMemoryMb);
     const bool car = usesCarLattice();

@@ -39,6 +39,7 @@ protected:
     void familyData(ompl::base::PlannerData &data, PlannerDataStates &states) const override;
     /// The records of the last search are freed; the move cache (map and vehicle only) is kept.
     void clearFamily() override { grid_.clear(); }
+    void mapChangedFamily() override { grid_.forgetMoves(); }
     std::string cannotSearch() const override { return tooBig_; }
 
 private:

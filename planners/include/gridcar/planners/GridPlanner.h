@@ -129,6 +129,9 @@ protected:
     virtual void familyData(ompl::base::PlannerData &data, PlannerDataStates &states) const = 0;
     /// Frees the family's records of the last search (clear()).
     virtual void clearFamily() {}
+    /// The map's cells changed since the last solve() (FootprintChecker::mapVersion()): the
+    /// family forgets what it learnt of them (its set-up stays).
+    virtual void mapChangedFamily() {}
     /// Why the family cannot search on the world set up (solve() then returns ABORT with it as
     /// the stop reason), or "".
     virtual std::string cannotSearch() const { return ""; }
@@ -175,6 +178,7 @@ private:
     GoalTarget goal_;
     /// The collision model of the world setup() was built on (both families use it).
     std::shared_ptr<CarCollision> collision_;
+    std::uint64_t mapVersion_{0};  ///< the checker's mapVersion() the collision model has seen
     std::string notExactBecause_;  ///< set through markNotExact() during one solve()
     std::shared_ptr<GridSE2StateSpace> ownSpace_;
     VehicleParams genericVehicle_;

@@ -57,6 +57,8 @@ public:
     virtual const OccupancyGrid *cells() const { return nullptr; }
     /// A point vehicle on gridcar's checker: a grid move is free when its target cell is.
     virtual bool pointVehicle() const { return false; }
+    /// The map's cells changed (FootprintChecker::cellsChanged()): forget what was learnt of them.
+    virtual void mapChanged() {}
 };
 
 /// A pose with the cosine and sine of its yaw (a caller that has them spares the motion check
@@ -90,6 +92,11 @@ public:
     bool segmentFree(const Pose2 &a, const Pose2 &b) const override { return c_.isMotionValid(a, b); }
     const OccupancyGrid *cells() const override { return &c_.grid(); }
     bool pointVehicle() const override { return c_.vehicle().isPoint(); }
+    void mapChanged() override
+    {
+        lastFrom_ = {std::nan(""), std::nan(""), std::nan("")};
+        lastMargin_ = std::nan("");
+    }
 
 private:
     const FootprintChecker &c_;
