@@ -5,6 +5,7 @@
 // the same footprint checker and the same start / goal poses on the first pairs; and on the
 // embedded campus the old grid lattice beside the car lattice from the same run.
 // Output: Markdown tables on stdout, progress on stderr. See docs/performance.md.
+#include "gridcar/bench/Quantile.h"
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/query/PlanQuery.h"
@@ -44,13 +45,6 @@ double peakRssMb()
 double seconds(std::chrono::steady_clock::time_point t0)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-double quantile(std::vector<double> v, double q)
-{
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5))];
 }
 
 struct Row

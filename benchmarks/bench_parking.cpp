@@ -7,6 +7,7 @@
 // pose's own yaw, no step sideways (each step along the pose's heading, forwards or backwards),
 // the goal pose reached; then driven by the simulation. Output: Markdown tables on stdout,
 // progress on stderr, optional pictures (--png-dir). See docs/performance.md.
+#include "gridcar/bench/Quantile.h"
 #include "gridcar/bench/Figure.h"
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/core/Angles.h"
@@ -29,13 +30,6 @@ using namespace gridcar;
 
 namespace
 {
-double quantile(std::vector<double> v, double q)
-{
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5))];
-}
-
 /// The goal tolerances the suite states: position and heading of the path's last pose.
 constexpr double kGoalMetres = 0.01, kGoalDeg = 0.5;
 /// A step may deviate from its pose's heading (forwards or backwards) by this much at most.

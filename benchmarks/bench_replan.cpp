@@ -8,6 +8,7 @@
 // (drivable: checkDrivable) and its cost compared with the fresh set-up's (the same search on
 // the same cells: the same cost). Output: a Markdown table on stdout, progress on stderr.
 // See docs/simulation.md.
+#include "gridcar/bench/Quantile.h"
 #include "gridcar/map/MapIO.h"
 #include "gridcar/path/Drivability.h"
 #include "gridcar/planners/PlannerFactory.h"
@@ -32,13 +33,6 @@ namespace
 double since(std::chrono::steady_clock::time_point t0)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-double quantile(std::vector<double> v, double q)
-{
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5))];
 }
 
 struct Options
