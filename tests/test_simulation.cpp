@@ -292,3 +292,31 @@ TEST(Simulation, APathThatCirclesIsDrivenRoundItsCircleNotAcrossIt)
             EXPECT_GT(r.distanceDriven, 0.9 * (36.0 + 2 * M_PI * R)) << what << ": driven " << r.distanceDriven;
         }
 }
+
+// The navigation loop's hook: asked before every step, true stops the run; the car brakes to a
+// standstill on its course and the run ends as Interrupted, the scenario's clock going on from
+// startTime.
+TEST(Simulation, AnInterruptStopsTheCarWhereItStandsAndTheClockGoesOn)
+{
+    GridSetup s = road(60.0, 4.0);
+    const double y = s.grid->cellCenterY(s.grid->height() / 2);
+    const auto path = straight(5.0, 55.0, y);
+    FollowerParams fp;
+    fp.startTime = 7.0;
+    int asked = 0;
+    fp.interrupt = [&](const VehicleState &st, double t) {
+        ++asked;
+        EXPECT_GE(t, 7.0);
+        return st.x > 20.0;
+    };
+    const DriveResult r = drivePath(path, *s.checker, Scenario(), fp);
+    ASSERT_EQ(r.outcome, DriveResult::Outcome::Interrupted) << r.reason;
+    EXPECT_GT(asked, 10);
+    EXPECT_NEAR(r.finalState.v, 0.0, 1e-9);
+    EXPECT_GT(r.finalState.x, 20.0);
+    EXPECT_LT(r.finalState.x, 30.0);
+    EXPECT_NEAR(r.finalState.y, y, 0.2);
+    ASSERT_FALSE(r.trajectory.empty());
+    EXPECT_NEAR(r.trajectory.back().t - 7.0, r.drivingTime, 1e-9);
+    EXPECT_NEAR(r.trajectory.back().x, r.finalState.x, 1e-9);
+}

@@ -316,7 +316,19 @@ private:
             double mx, my;
             m.positionAt(time, mx, my);
             const double r = m.shape == MovingObstacle::Shape::Disc ? m.radius : 0.5 * std::hypot(m.sizeX, m.sizeY);
-            lane(mx, my, r, freeMoving);
+            if (m.shape == MovingObstacle::Shape::Disc)
+                lane(mx, my, r, freeMoving);
+            else  // a box as it is (its circumscribed disc closes a lane that passes a long box's end)
+                for (double sr = 0.0; sr < freeMoving;)
+                {
+                    const double d = m.distanceFrom(fx0 + sr * cx, fy0 + sr * cy, time);
+                    if (d <= halfWidth_)
+                    {
+                        freeMoving = sr;
+                        break;
+                    }
+                    sr += std::max(d - halfWidth_, 0.5 * field_.resolution());
+                }
             const double vx = m.velocityEstimate(time, prm_.dt, 0), vy = m.velocityEstimate(time, prm_.dt, 1);
             const double horizon =
                 std::min(20.0, std::max({6.0, q.v / veh_.deceleration + 2.0, brakeRange_ / std::max(q.v, 0.1)}));

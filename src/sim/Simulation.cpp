@@ -2,6 +2,7 @@
 #include "gridcar/sim/Simulation.h"
 
 #include "sim/Follower.h"
+#include "sim/SteeringCuts.h"
 
 #include "gridcar/core/Cusps.h"
 
@@ -38,6 +39,7 @@ std::string DriveResult::outcomeName(Outcome o)
         case Outcome::Reached: return "reached";
         case Outcome::Collided: return "collided";
         case Outcome::Stuck: return "stuck";
+        case Outcome::Interrupted: return "interrupted";
         default: return "timeout";
     }
 }
@@ -76,69 +78,6 @@ VehicleState turnedRound(VehicleState s)
 
 /// How far beside a cusp (m) a car stopped at the end of its piece may change gear and go on.
 constexpr double kCuspReach = 1.0;
-
-/// Where a piece's curvature jumps faster than the wheels can follow at a crawl (a lattice
-/// path's arcs at full lock against straights or the opposite lock) in a tight spot, the piece
-/// is cut: the car stops there and turns its wheels at a standstill before it goes on, as a
-/// driver does in a tight manoeuvre. Driven through, such a jump leaves the heading lagging by about half the
-/// jump times the distance the wheels take to turn (0.1 rad for paper C's car reversing into a
-/// parallel slot), which a body a few centimetres from a parked car has no room for. A jump is
-/// a change of the wheel angle, atan(wheelbase x curvature), between two neighbouring vertices
-/// of more than the steering rate turns while the car crawls (min(0.1 v_max, 0.5 m/s)) over
-/// the step between them, where the body on the path passes within kTightClearance of the map
-/// in the next 2 m (in the open the lag costs nothing, and a stop there only time); cuts closer
-/// than 0.3 m to the last one, or to either end, are merged away. A path that is not followable
-/// (a grid path's kinks, beyond K_max) is not cut. @p poses carry the body's yaw.
-constexpr double kTightClearance = 0.15;
-std::vector<std::vector<Pose2>> cutAtSteeringJumps(const std::vector<Pose2> &poses, const FootprintChecker &checker)
-{
-    const VehicleParams &veh = checker.vehicle();
-    std::vector<Pose2> pts;
-    for (const Pose2 &p : poses)
-        if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
-    if (pts.size() < 4) return {poses};
-    std::vector<double> cum{0.0}, heading;
-    for (std::size_t i = 1; i < pts.size(); ++i)
-    {
-        cum.push_back(cum.back() + std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y));
-        heading.push_back(std::atan2(pts[i].y - pts[i - 1].y, pts[i].x - pts[i - 1].x));
-    }
-    // wheel angle at each inner vertex (turning-angle curvature, as the drivable check measures)
-    std::vector<double> wheel(pts.size(), 0.0);
-    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
-    {
-        const double ds = 0.5 * (cum[i + 1] - cum[i - 1]);
-        const double k = wrapAngle(heading[i] - heading[i - 1]) / ds;
-        if (std::abs(k) > 1.05 * veh.maxCurvature()) return {poses};  // not followable: paper C's rule alone
-        wheel[i] = std::atan(veh.wheelbase * k);
-    }
-    wheel.front() = wheel[1];
-    wheel.back() = wheel[pts.size() - 2];
-    const double rate = veh.maxSteerRateDeg * M_PI / 180.0, crawl = std::min(0.1 * veh.maxSpeed, 0.5);
-    std::vector<std::size_t> cuts;
-    for (std::size_t i = 1; i + 1 < pts.size(); ++i)
-    {
-        const double ds = cum[i + 1] - cum[i];
-        if (std::abs(wheel[i + 1] - wheel[i]) <= rate * ds / crawl + 1e-9) continue;
-        // the jump is spread over the two vertices round a primitive's joint: cut at the first
-        if (cum[i] < 0.3 || cum.back() - cum[i] < 0.3) continue;
-        if (!cuts.empty() && cum[i] - cum[cuts.back()] < 0.3) continue;
-        bool tight = false;
-        for (std::size_t j = i; j < pts.size() && cum[j] - cum[i] <= 2.0 && !tight; ++j)
-            tight = checker.clearance(pts[j].x, pts[j].y, pts[j].yaw) < kTightClearance;
-        if (tight) cuts.push_back(i);
-    }
-    if (cuts.empty()) return {poses};
-    std::vector<std::vector<Pose2>> out;
-    std::size_t from = 0;
-    for (std::size_t c : cuts)
-    {
-        out.emplace_back(pts.begin() + std::ptrdiff_t(from), pts.begin() + std::ptrdiff_t(c) + 1);
-        from = c;
-    }
-    out.emplace_back(pts.begin() + std::ptrdiff_t(from), pts.end());
-    return out;
-}
 
 /// What the loop over a path's pieces shares.
 struct DriveRun
@@ -197,6 +136,7 @@ struct DriveRun
             ctSum += crossTrack;
             res.crossTrackMax = std::max(res.crossTrackMax, crossTrack);
             ++steps;
+            if (prm.interrupt && prm.interrupt(backward ? turnedRound(st) : st, t)) return stop(follower, veh, st, backward);
             const Pose2 &end = path.pts.back();
             const double toEnd = std::hypot(st.x - end.x, st.y - end.y);
             // a cusp: within 0.1 m, or once stopped at the end beside it (the speed command stops
@@ -266,6 +206,17 @@ struct DriveRun
                 blockedSince = -1.0;
             if (!step(follower, veh, st, steerUse, vUse, backward)) return false;
         }
+    }
+
+    /// The run interrupted: the car brakes to a standstill with its wheels held. False always
+    /// (res says Interrupted, or what the body hit while it braked).
+    bool stop(const detail::Follower &follower, const VehicleParams &veh, VehicleState &st, bool backward)
+    {
+        while (st.v > 1e-9)
+            if (!step(follower, veh, st, st.steer, 0.0, backward)) return false;
+        res.outcome = DriveResult::Outcome::Interrupted;
+        res.reason = "interrupted at " + follower.where(st);
+        return false;
     }
 
     /// Backs the car up along the part of @p path it has driven (in the other gear, at a crawl)
@@ -339,17 +290,19 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         for (std::size_t i = 1; i < p.poses.size(); ++i)
             len += std::hypot(p.poses[i].x - p.poses[i - 1].x, p.poses[i].y - p.poses[i - 1].y);
         if (len <= 1e-9) continue;
-        for (std::vector<Pose2> &cut : cutAtSteeringJumps(p.poses, checker)) pieces.push_back({std::move(cut), p.backward});
+        for (std::vector<Pose2> &cut : detail::cutAtSteeringJumps(p.poses, checker)) pieces.push_back({std::move(cut), p.backward});
     }
     if (pieces.empty())
     {
         res.outcome = DriveResult::Outcome::Reached;
         res.reason = "the path has no length";
+        if (!pathIn.empty()) res.finalState = {pathIn.front().x, pathIn.front().y, pathIn.front().yaw, 0.0, 0.0};
         return res;
     }
     std::unique_ptr<FootprintChecker> reverseChecker;  // the mirrored vehicle, when a piece reverses or backs up
     const double tol = prm.goalTolerance > 0 ? prm.goalTolerance : std::max(0.3, checker.field().resolution());
     DriveRun run{scenario, prm, tol, 0.0, res};
+    run.t = prm.startTime;
     run.car = &checker;
     run.mirror = &reverseChecker;
     std::vector<std::unique_ptr<detail::TrackedPath>> tracked;
@@ -365,7 +318,7 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         // steering-rate cap included): 5 x length / v_max timed out a 30 m/s car on a campus
         budget += 10.0 + std::max(5.0 * tracked.back()->total / fc.vehicle().maxSpeed, 3.0 * tracked.back()->profile.time);
     }
-    run.tmax = prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget;
+    run.tmax = prm.startTime + (prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget);
     res.minClearance = detail::kInf;
     VehicleState st;
     st.x = pieces.front().poses.front().x;
@@ -373,19 +326,21 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
     const auto &p0 = tracked.front()->pts;
     st.yaw = std::atan2(p0[1].y - p0[0].y, p0[1].x - p0[0].x);  // turned round already for a reverse piece
     run.record(st, pieces.front().backward);
-    bool ok = true;
+    bool ok = true, backward = pieces.front().backward;
     for (std::size_t k = 0; k < pieces.size() && ok; ++k)
     {
         if (k > 0 && pieces[k].backward != pieces[k - 1].backward) st = turnedRound(st);
-        ok = run.piece(*tracked[k], run.checkerFor(pieces[k].backward), st, pieces[k].backward, k + 1 == pieces.size());
+        backward = pieces[k].backward;
+        ok = run.piece(*tracked[k], run.checkerFor(backward), st, backward, k + 1 == pieces.size());
     }
     if (ok)
     {
         res.outcome = DriveResult::Outcome::Reached;
         res.reason = "reached the goal";
     }
-    if (pieces.back().backward) st = turnedRound(st);
-    res.drivingTime = run.t;
+    if (backward) st = turnedRound(st);
+    res.finalState = st;
+    res.drivingTime = run.t - prm.startTime;
     res.crossTrackMean = run.steps ? run.ctSum / double(run.steps) : 0.0;
     if (!std::isfinite(res.minClearance)) res.minClearance = checker.clearance(st.x, st.y, st.yaw);
     return res;

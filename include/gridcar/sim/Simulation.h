@@ -5,6 +5,7 @@
 
 #include "gridcar/collision/FootprintChecker.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -79,6 +80,13 @@ struct FollowerParams
     int maxRecoveries{3};       ///< recoveries before the run is declared stuck
     double timeLimit{0.0};      ///< s; 0 = 50 s + per piece 10 s + max(5 x length / v_max, 3 x planned driving time)
     bool recordTrajectory{true};
+    /// Simulated time at the first step, s (the scenario's clock: a run that goes on from an
+    /// earlier one starts where it stopped). Trajectory times count from it; drivingTime does not.
+    double startTime{0.0};
+    /// Asked before every step with the vehicle's state (its body's pose; v negative while
+    /// reversing) and the time: true stops the run, the car braking to a standstill on its
+    /// course, and it ends as Interrupted (a navigation loop's "the path ahead is blocked").
+    std::function<bool(const VehicleState &, double)> interrupt;
 };
 
 /// One simulated step, for the trajectory CSV and pictures.
@@ -90,7 +98,7 @@ struct TrajectorySample
 /// How a run ended and what it measured.
 struct DriveResult
 {
-    enum class Outcome { Reached, Collided, Stuck, Timeout } outcome{Outcome::Timeout};
+    enum class Outcome { Reached, Collided, Stuck, Timeout, Interrupted } outcome{Outcome::Timeout};
     std::string reason;             ///< one line: what was hit, where it stopped, ...
     double drivingTime{0.0};        ///< s of simulated time until the end
     double pathLength{0.0};         ///< m, of the followed path
@@ -99,6 +107,8 @@ struct DriveResult
     double crossTrackMax{0.0};
     double minClearance{0.0};       ///< m, footprint clearance (static map and moving obstacles)
     int recoveries{0};
+    /// Where the vehicle stands (or rolls) at the end: its body's pose, v negative in reverse
+    VehicleState finalState;
     std::vector<TrajectorySample> trajectory;
     static std::string outcomeName(Outcome o);
 };

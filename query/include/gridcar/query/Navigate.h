@@ -1,0 +1,95 @@
+#pragma once
+/// @file Navigate.h
+/// @brief The navigation loop: plan on the working map, drive with paper C's follower while a
+/// range sensor watches the true world, and replan from where the vehicle stands when the path
+/// ahead becomes blocked or the follower stalls.
+
+#include "gridcar/query/PlanQuery.h"
+#include "gridcar/sim/Sensing.h"
+#include "gridcar/sim/Simulation.h"
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gridcar
+{
+/// Settings of Navigator (plain values with defaults).
+struct NavigationOptions
+{
+    PlannerConfig planner{"corner-astar", {}, false, false};  ///< the planner and its settings
+    SetupOptions setup;             ///< the space it plans on
+    double planTimeLimit{5.0};      ///< s per plan
+    RangeSensorParams sensor;
+    FollowerParams follower;        ///< its startTime and interrupt are the navigator's
+    int maxReplans{30};             ///< replans before the run ends as Stuck
+    int maxStalls{3};               ///< drives ending stuck (each followed by a replan) before it ends as Stuck
+};
+
+/// How a navigation ended and what it measured.
+struct NavigationResult
+{
+    enum class Outcome { Reached, GoalBlocked, NoPath, Collided, Stuck, Timeout } outcome{Outcome::NoPath};
+    std::string reason;                      ///< one line
+    double drivingTime{0.0};                 ///< s of simulated time, stops for replanning included
+    double distanceDriven{0.0};              ///< m
+    double minClearance{std::numeric_limits<double>::infinity()};  ///< m, of the body in the true world
+    int replans{0};                          ///< plans after the first
+    int stalls{0};                           ///< drives that ended stuck
+    std::vector<double> replanSeconds;       ///< wall time of each replan: the map updates since the last plan + solve()
+    std::vector<double> updateSeconds;       ///< wall time of each working-map update (distance field + checker)
+    std::vector<std::vector<Pose2>> plans;   ///< every path planned, in order
+    std::vector<TrajectorySample> trajectory;
+    Pose2 finalPose;                         ///< where the vehicle stopped
+    /// With GoalBlocked: the pose nearest the goal the planner reached (its approximate answer)
+    Pose2 nearestReachable;
+    bool hasNearestReachable{false};
+    std::size_t sensedCells{0};              ///< cells of the working map marked by the sensor at the end
+    static std::string outcomeName(Outcome o);
+};
+
+/**
+ * @brief Plans on a working map and drives in the true world, replanning as it learns.
+ *
+ * The working map starts as the map given; the true world is that map (or another one of the
+ * same size: what the map did not show) plus a Scenario's obstacles, standing or moving. Every
+ * RangeSensorParams::period the sensor scans the true world (WorkingMap::scan()); changed cells
+ * update the working map's distance field and footprint checker in place
+ * (DistanceField::update(), FootprintChecker::cellsChanged()), so the planner kept between plans
+ * pays a search, not a set-up. When the path ahead of the vehicle (from its projection on, every
+ * pose at its own heading) collides in the working map, the car brakes to a standstill and the
+ * planner plans again from its pose; a drive that ends stuck (the follower's recoveries spent)
+ * is replanned too. Obstacles moving faster than RangeSensorParams::stationarySpeed are left
+ * to the follower's potential field (paper C: robustness to dynamic obstacles), as a driver
+ * waits for a pedestrian to cross. A plan that fails where the goal's pose collides in the
+ * working map, or where the sensor added cells within 1.5 m of the body's reach round the goal
+ * (an obstacle over the goal, seen from its sides), ends the run as GoalBlocked with the pose
+ * nearest the goal the planner reached; any other failed plan as NoPath.
+ */
+class Navigator
+{
+public:
+    /// @p map: the map the vehicle is given; @p world: the true map (null: the same map).
+    Navigator(std::shared_ptr<const OccupancyGrid> map, const VehicleParams &vehicle,
+              const NavigationOptions &options = NavigationOptions(), std::shared_ptr<const OccupancyGrid> world = nullptr);
+    ~Navigator();
+    Navigator(const Navigator &) = delete;
+    Navigator &operator=(const Navigator &) = delete;
+
+    /// Navigates start -> goal (a pose, or with @p freeGoalHeading a position) among @p scenario's
+    /// obstacles. The working map keeps what was seen between runs.
+    NavigationResult run(const Pose2 &start, const Pose2 &goal, bool freeGoalHeading, const Scenario &scenario);
+
+    const OccupancyGrid &workingMap() const;
+    /// The true world's checker (the vehicle against the true map; not the scenario).
+    const FootprintChecker &worldChecker() const;
+    /// The set-up the planner plans on (the working map).
+    GridSetup &setup();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gridcar

@@ -1,0 +1,178 @@
+// The navigation loop: plan, drive, sense, update the working map in place, replan.
+#include "gridcar/query/Navigate.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace gridcar
+{
+std::string NavigationResult::outcomeName(Outcome o)
+{
+    switch (o)
+    {
+        case Outcome::Reached: return "reached";
+        case Outcome::GoalBlocked: return "goal blocked";
+        case Outcome::NoPath: return "no path";
+        case Outcome::Collided: return "collided";
+        case Outcome::Stuck: return "stuck";
+        default: return "timeout";
+    }
+}
+
+struct Navigator::Impl
+{
+    std::shared_ptr<const OccupancyGrid> world;
+    std::shared_ptr<const DistanceField> worldField;
+    std::unique_ptr<FootprintChecker> worldChecker;
+    WorkingMap working;
+    std::shared_ptr<DistanceField> field;  ///< of the working map, updated in place
+    GridSetup setup;
+    ompl::base::PlannerPtr planner;
+    NavigationOptions options;
+
+    Impl(const std::shared_ptr<const OccupancyGrid> &map, const VehicleParams &vehicle, const NavigationOptions &o,
+         std::shared_ptr<const OccupancyGrid> truth)
+      : world(truth ? std::move(truth) : map), working(std::make_shared<OccupancyGrid>(*map)), options(o)
+    {
+        if (world->width() != map->width() || world->height() != map->height() ||
+            world->resolution() != map->resolution() || world->originX() != map->originX() ||
+            world->originY() != map->originY())
+            throw std::invalid_argument("Navigator: the true map must have the map's size, resolution and origin");
+        field = std::make_shared<DistanceField>(working.grid());
+        field->prepareUpdates(working.grid());
+        worldField = world == map ? nullptr : std::make_shared<const DistanceField>(*world);
+        setup = makeGridSetup(working.gridPtr(), vehicle, o.setup, field);
+        worldChecker = std::make_unique<FootprintChecker>(world, worldField ? worldField : std::make_shared<const DistanceField>(*world), vehicle);
+        planner = configurePlanner(setup.ss->getSpaceInformation(), o.planner);
+    }
+
+    /// One scan; the working map's field and checker brought up to date. True when cells changed.
+    bool sense(const Scenario &sc, double t, double x, double y, NavigationResult &res)
+    {
+        const CellWindow w = working.scan(*world, sc, t, x, y, options.sensor);
+        if (w.empty()) return false;
+        const auto t0 = std::chrono::steady_clock::now();
+        setup.checker->cellsChanged(w, field->update(working.grid(), w));
+        res.updateSeconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        return true;
+    }
+};
+
+namespace
+{
+/// A plan that fails with cells the sensor added within this distance (m) of the body's reach
+/// round the goal ends the run as GoalBlocked: what the map did not show stands at the goal.
+constexpr double kGoalNear = 1.5;
+
+/// Index of the path pose nearest (x, y), searched from @p from on over the next 10 m.
+std::size_t nearestAhead(const std::vector<Pose2> &path, std::size_t from, double x, double y)
+{
+    std::size_t best = from;
+    double bestD = std::hypot(path[from].x - x, path[from].y - y), along = 0.0;
+    for (std::size_t i = from + 1; i < path.size() && along <= 10.0; ++i)
+    {
+        along += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
+        const double d = std::hypot(path[i].x - x, path[i].y - y);
+        if (d < bestD) best = i, bestD = d;
+    }
+    return best;
+}
+}  // namespace
+
+Navigator::Navigator(std::shared_ptr<const OccupancyGrid> map, const VehicleParams &vehicle, const NavigationOptions &options,
+                     std::shared_ptr<const OccupancyGrid> world)
+{
+    if (!map) throw std::invalid_argument("Navigator needs a map");
+    impl_ = std::make_unique<Impl>(map, vehicle, options, std::move(world));
+}
+
+Navigator::~Navigator() = default;
+const OccupancyGrid &Navigator::workingMap() const { return impl_->working.grid(); }
+const FootprintChecker &Navigator::worldChecker() const { return *impl_->worldChecker; }
+GridSetup &Navigator::setup() { return impl_->setup; }
+
+NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool freeGoalHeading, const Scenario &scenario)
+{
+    Impl &m = *impl_;
+    NavigationResult res;
+    const FootprintChecker &work = *m.setup.checker;
+    Pose2 at = start;
+    double t = 0.0, pendingUpdate = 0.0;
+    res.finalPose = start;
+    std::size_t updatesSeen = 0;
+    m.sense(scenario, t, at.x, at.y, res);
+    auto finish = [&](NavigationResult::Outcome o, std::string why) {
+        res.outcome = o;
+        res.reason = std::move(why);
+        res.sensedCells = m.working.sensedCells();
+        return res;
+    };
+    for (;;)
+    {
+        for (; updatesSeen < res.updateSeconds.size(); ++updatesSeen) pendingUpdate += res.updateSeconds[updatesSeen];
+        if (!work.isValid(at))
+            return finish(NavigationResult::Outcome::Stuck, "the vehicle's pose " + std::to_string(at.x) + ", " +
+                                                                std::to_string(at.y) + " collides in the working map: no plan from it");
+        const QueryResult q = runQuery(m.setup, m.planner, at, goal, m.options.planTimeLimit, freeGoalHeading);
+        if (!res.plans.empty()) res.replanSeconds.push_back(pendingUpdate + q.seconds);
+        pendingUpdate = 0.0;
+        if (q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
+        {
+            // the goal in or beside what the map did not show: seen from its sides, an obstacle
+            // over the goal leaves the goal's pose free in the working map but no way to it
+            const bool goalFree = freeGoalHeading ? work.fitsAtSomeHeading(goal.x, goal.y, 72) : work.isValid(goal);
+            if (!goalFree || m.working.sensedWithin(goal.x, goal.y, work.reach() + kGoalNear))
+            {
+                if (!q.path.empty()) res.nearestReachable = q.path.back(), res.hasNearestReachable = true;
+                return finish(NavigationResult::Outcome::GoalBlocked,
+                              "the goal is blocked by an obstacle the map did not show" +
+                                  std::string(res.hasNearestReachable ? "; the nearest pose reached is reported" : ""));
+            }
+            return finish(NavigationResult::Outcome::NoPath, "the planner found no path from (" + std::to_string(at.x) + ", " +
+                                                                 std::to_string(at.y) + "): " + q.status.asString() +
+                                                                 (q.notExactBecause.empty() ? "" : " (" + q.notExactBecause + ")"));
+        }
+        if (res.replans > m.options.maxReplans)
+            return finish(NavigationResult::Outcome::Stuck, "replanned " + std::to_string(res.replans) + " times");
+        res.plans.push_back(q.path);
+        const std::vector<Pose2> &path = res.plans.back();
+        std::size_t ahead = 0;
+        double lastScan = t;
+        FollowerParams fp = m.options.follower;
+        fp.startTime = t;
+        fp.interrupt = [&](const VehicleState &s, double now) {
+            if (now - lastScan < m.options.sensor.period - 1e-9) return false;
+            lastScan = now;
+            ahead = nearestAhead(path, ahead, s.x, s.y);
+            if (!m.sense(scenario, now, s.x, s.y, res)) return false;
+            for (std::size_t i = ahead; i < path.size(); ++i)
+                if (!work.isValid(path[i])) return true;
+            return false;
+        };
+        const DriveResult d = drivePath(path, *m.worldChecker, scenario, fp);
+        res.trajectory.insert(res.trajectory.end(), d.trajectory.begin(), d.trajectory.end());
+        t += d.drivingTime;
+        res.drivingTime = t;
+        res.distanceDriven += d.distanceDriven;
+        res.minClearance = std::min(res.minClearance, d.minClearance);
+        at = {d.finalState.x, d.finalState.y, d.finalState.yaw};
+        res.finalPose = at;
+        switch (d.outcome)
+        {
+            case DriveResult::Outcome::Reached: return finish(NavigationResult::Outcome::Reached, d.reason);
+            case DriveResult::Outcome::Collided: return finish(NavigationResult::Outcome::Collided, d.reason);
+            case DriveResult::Outcome::Timeout: return finish(NavigationResult::Outcome::Timeout, d.reason);
+            case DriveResult::Outcome::Stuck:
+                if (++res.stalls > m.options.maxStalls)
+                    return finish(NavigationResult::Outcome::Stuck, d.reason + " (" + std::to_string(res.stalls) + " stalls)");
+                m.sense(scenario, t, at.x, at.y, res);
+                break;
+            default: break;  // interrupted: the path ahead is blocked in the working map
+        }
+        ++res.replans;
+    }
+}
+
+}  // namespace gridcar

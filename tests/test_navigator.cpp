@@ -1,0 +1,122 @@
+#include "gridcar/query/Navigate.h"
+
+#include "gridcar/path/Drivability.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace gridcar;
+
+namespace
+{
+/// A hall 40 x 12 m at 0.1 m cells, walls round it.
+std::shared_ptr<const OccupancyGrid> hall()
+{
+    auto g = std::make_shared<OccupancyGrid>(400, 120, 0.1);
+    for (int c = 0; c < 400; ++c) g->set(c, 0, CellState::Occupied), g->set(c, 119, CellState::Occupied);
+    for (int r = 0; r < 120; ++r) g->set(0, r, CellState::Occupied), g->set(399, r, CellState::Occupied);
+    return g;
+}
+
+MovingObstacle standingBox(double x, double y, double sx, double sy)
+{
+    MovingObstacle o;
+    o.name = "pallet";
+    o.shape = MovingObstacle::Shape::Box;
+    o.sizeX = sx, o.sizeY = sy;
+    o.waypoints = {{x, y}};
+    o.speed = 0.0;
+    return o;
+}
+
+/// Every trajectory sample's body free of the map and of the scenario's obstacles.
+double worstClearance(const NavigationResult &r, const FootprintChecker &world, const Scenario &sc)
+{
+    double worst = 1e9;
+    for (const TrajectorySample &s : r.trajectory)
+    {
+        double d = world.clearance(s.x, s.y, s.yaw);
+        double cx[4], cy[4];
+        world.corners(s.x, s.y, s.yaw, cx, cy);
+        for (const MovingObstacle &o : sc.obstacles)
+            for (int k = 0; k < 4; ++k) d = std::min(d, o.distanceFrom(cx[k], cy[k], s.t));
+        worst = std::min(worst, d);
+    }
+    return worst;
+}
+}  // namespace
+
+// With nothing the map did not show, the first plan is driven to the goal: no replan.
+TEST(Navigator, AKnownWorldIsDrivenWithoutReplanning)
+{
+    Navigator nav(hall(), VehicleParams::preset("paper-c-robot"));
+    const NavigationResult r = nav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, Scenario());
+    ASSERT_EQ(r.outcome, NavigationResult::Outcome::Reached) << r.reason;
+    EXPECT_EQ(r.replans, 0);
+    EXPECT_EQ(r.plans.size(), 1u);
+    EXPECT_EQ(r.sensedCells, 0u);
+    EXPECT_LT(std::hypot(r.finalPose.x - 37.0, r.finalPose.y - 6.0), 0.35);
+}
+
+// A pallet across the planned route, not in the map: the sensor sees it, the car stops, plans
+// round it from where it stands and arrives; no sample of the drive touches anything.
+TEST(Navigator, AnUnmappedObstacleAcrossTheRouteIsSeenAndDrivenRound)
+{
+    Scenario sc;
+    sc.obstacles.push_back(standingBox(20.0, 5.0, 1.0, 8.0));  // y 1-9 at x 19.5-20.5: 3 m left above it
+    Navigator nav(hall(), VehicleParams::preset("paper-c-robot"));
+    const NavigationResult r = nav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, sc);
+    ASSERT_EQ(r.outcome, NavigationResult::Outcome::Reached) << r.reason;
+    EXPECT_GE(r.replans, 1);
+    EXPECT_EQ(r.replanSeconds.size(), std::size_t(r.replans));
+    EXPECT_GT(r.sensedCells, 10u);
+    EXPECT_FALSE(r.updateSeconds.empty());
+    EXPECT_GT(worstClearance(r, nav.worldChecker(), sc), 0.0);
+    // the last plan goes above the pallet and is drivable in the working map
+    const std::vector<Pose2> &last = r.plans.back();
+    bool above = false;
+    for (const Pose2 &p : last) above = above || (std::abs(p.x - 20.0) < 0.6 && p.y > 9.0);
+    EXPECT_TRUE(above);
+    DrivabilityOptions d;
+    d.reversing = true;
+    EXPECT_TRUE(checkDrivable(last, *nav.setup().checker, d).drivable);
+    // the drive went round it: further than the straight line
+    EXPECT_GT(r.distanceDriven, 34.5);
+    EXPECT_LT(std::hypot(r.finalPose.x - 37.0, r.finalPose.y - 6.0), 0.35);
+}
+
+// A goal the pallet stands on: reported as blocked, with the nearest pose the planner reached.
+TEST(Navigator, AGoalOnAnUnmappedObstacleIsReportedBlocked)
+{
+    Scenario sc;
+    sc.obstacles.push_back(standingBox(30.0, 6.0, 2.0, 2.0));
+    NavigationOptions o;
+    o.planTimeLimit = 1.0;
+    Navigator nav(hall(), VehicleParams::preset("paper-c-robot"), o);
+    const NavigationResult r = nav.run({3.0, 6.0, 0.0}, {30.0, 6.0, 0.0}, false, sc);
+    ASSERT_EQ(r.outcome, NavigationResult::Outcome::GoalBlocked) << r.reason;
+    EXPECT_GT(worstClearance(r, nav.worldChecker(), sc), 0.0);
+    ASSERT_TRUE(r.hasNearestReachable);
+    EXPECT_LT(std::hypot(r.nearestReachable.x - 30.0, r.nearestReachable.y - 6.0), 3.0);
+    EXPECT_TRUE(nav.setup().checker->isValid(r.nearestReachable));
+}
+
+// A pedestrian crossing the route is not planned round (it moves): the follower's field lets
+// it pass; the car arrives without touching it.
+TEST(Navigator, APedestrianCrossingIsLeftToTheFollower)
+{
+    Scenario sc;
+    MovingObstacle walker;
+    walker.name = "pedestrian";
+    walker.radius = 0.3;
+    walker.waypoints = {{15.0, 11.0}, {15.0, 1.0}};
+    walker.speed = 1.0;
+    walker.startTime = 8.0;
+    sc.obstacles.push_back(walker);
+    Navigator nav(hall(), VehicleParams::preset("paper-c-robot"));
+    const NavigationResult r = nav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, sc);
+    ASSERT_EQ(r.outcome, NavigationResult::Outcome::Reached) << r.reason;
+    EXPECT_GT(worstClearance(r, nav.worldChecker(), sc), 0.0);
+    EXPECT_EQ(r.replans, 0);  // standing by the walls before and after, never on the route
+}
