@@ -50,9 +50,11 @@ CarLatticeQuery queryFor(const Pose2 &start, CarLatticeQuery q, const GoalTarget
     {
         case GoalTarget::Kind::State:  // a node at the goal pose, or the analytic expansion
             q.goalYawTolerance = goal.yawTolerance;
+            q.goalPositionTolerance = 0.0;
             break;
         case GoalTarget::Kind::Position:
             q.goalYawTolerance = goal.yawTolerance;
+            q.goalPositionTolerance = goal.positionTolerance;
             q.inGoal = goal.satisfied;
             break;
         case GoalTarget::Kind::SampledRegion:  // aimed at; the region decides

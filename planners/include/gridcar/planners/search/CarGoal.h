@@ -21,6 +21,9 @@ struct CarGoalTerms
     Pose2 goal;
     bool shoot{true};
     double goalYawTolerance{-1.0};  ///< rad: < 0 any heading, 0 exactly goal.yaw, > 0 within it
+    /// m: how far from `goal` inGoal accepts a position (a PositionGoal's tolerance; 0 for a
+    /// GoalState, < 0 for a region that is no disc round `goal`)
+    double goalPositionTolerance{-1.0};
     /// Goal test of a lattice state (empty: only the analytic expansion reaches the goal).
     std::function<bool(const Pose2 &)> inGoal;
     /// False when `goal` is no target at all (a goal region that cannot be sampled): no
