@@ -1,4 +1,4 @@
-# gridcar drive / paper-i / paper-c on the campus map (generated here): outcomes, JSON fields,
+# gridcar drive / navigate / paper-i / paper-c on the campus map (generated here): outcomes, JSON fields,
 # a moving obstacle, a given path, bad scenario and path files.
 include("${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake")
 file(REMOVE_RECURSE "${WORK}")
@@ -61,3 +61,31 @@ file(WRITE "${WORK}/away.yaml" "obstacles:\n  - {name: drone, shape: disc, radiu
 run_gridcar(2 drive ${Q} --planner corner-astar --scenario "${WORK}/away.yaml")
 expect_in("${ERR}" "away.yaml: obstacle 1 (drone): waypoint")
 expect_in("${ERR}" "is outside the map")
+
+# gridcar navigate: a pallet across the road the robot planned, seen by the sensor and driven
+# round after replanning, with a pedestrian crossing further on; a goal inside the pallet is
+# reported blocked with the nearest pose reached (exit 3); bad sensor settings exit 2
+file(WRITE "${WORK}/pallet.yaml" "obstacles:\n  - {name: pallet, shape: box, size: [4, 4], waypoints: [[532, 368.5]], speed: 0}\n  - {name: pedestrian, shape: disc, radius: 0.3, waypoints: [[565, 343], [565, 356]], speed: 0.5, start_time: 60, loop: true}\n")
+run_gridcar(0 navigate ${Q} --scenario "${WORK}/pallet.yaml" --json --png "${WORK}/nav.png" --out "${WORK}/nav.csv")
+foreach(key "\"outcome\":\"reached\"" "\"replan_seconds\":[" "\"sensed_cells\":" "\"min_clearance\":" "\"final_pose\":{")
+  expect_in("${OUT}" "${key}")
+endforeach()
+if(OUT MATCHES "\"replans\":0[,}]" OR OUT MATCHES "\"sensed_cells\":0[,}]")
+  message(FATAL_ERROR "navigate did not see the pallet or did not replan round it: ${OUT}")
+endif()
+foreach(f nav.png nav.csv)
+  if(NOT EXISTS "${WORK}/${f}")
+    message(FATAL_ERROR "navigate did not write ${f}")
+  endif()
+endforeach()
+run_gridcar(0 navigate ${Q})
+expect_in("${OUT}" "reached: reached the goal")
+expect_in("${OUT}" "0 replans")
+run_gridcar(3 navigate --map "${WORK}/campus.yaml" --vehicle paper-c-robot --start 506.749,380.993 --goal 532,368.5
+            --scenario "${WORK}/pallet.yaml" --json --time-limit 2)
+expect_in("${OUT}" "\"outcome\":\"goal blocked\"")
+expect_in("${OUT}" "\"nearest_reachable\":{")
+run_gridcar(2 navigate ${Q} --range 0)
+expect_in("${ERR}" "--range must be > 0 m")
+run_gridcar(2 navigate ${Q} --scenario "${WORK}/bad.yaml")
+expect_in("${ERR}" "bad.yaml: obstacle 1: shape must be disc or box")

@@ -3,6 +3,7 @@
 // and returns how to run it. Shared option groups (map, vehicle, time limit, a planning query)
 // are declared once, here.
 #include "gridcar/core/Errors.h"
+#include "gridcar/sim/Simulation.h"
 #include "gridcar/spaces/Setup.h"
 
 #include <CLI/CLI.hpp>
@@ -29,6 +30,7 @@ Command addPlanCommand(CLI::App &app);
 Command addPlannersCommand(CLI::App &app);
 Command addScenCommand(CLI::App &app);
 Command addDriveCommand(CLI::App &app);
+Command addNavigateCommand(CLI::App &app);
 Command addBenchCommand(CLI::App &app);
 Command addPaperICommand(CLI::App &app);
 Command addPaperCCommand(CLI::App &app);
@@ -99,6 +101,12 @@ std::vector<double> parseNumbers(const std::string &text, const std::string &opt
 /// @p rowsFromBottom: ROW counts from the map origin's row (ROS's order), else from the image's top.
 Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,
                 bool &hasYaw, bool rowsFromBottom = false);
+/// The scenario file of --scenario ("": none); MapLoadError naming the file and the obstacle
+/// when a waypoint lies outside @p g.
+Scenario loadScenarioOnMap(const std::string &file, const OccupancyGrid &g);
+/// The trajectory CSV of --out: t (s), x, y (m), yaw_rad, v (m/s), steer_rad; InputError when
+/// the file cannot be written.
+void writeTrajectoryCsv(const std::string &file, const std::vector<TrajectorySample> &trajectory);
 /// "(x, y, yaw deg)".
 std::string describe(const Pose2 &p);
 /// Creates a folder (and its parents); InputError saying why not.

@@ -20,6 +20,32 @@
 
 namespace gridcar::cli
 {
+Scenario loadScenarioOnMap(const std::string &file, const OccupancyGrid &g)
+{
+    Scenario sc;
+    if (file.empty()) return sc;
+    sc = Scenario::load(file);
+    // a waypoint off the map is a mistake in the file (a wrong frame, a typo), not a scenario
+    for (std::size_t i = 0; i < sc.obstacles.size(); ++i)
+        for (const auto &[x, y] : sc.obstacles[i].waypoints)
+            if (!(x >= g.originX() && x <= g.originX() + g.sizeX() && y >= g.originY() && y <= g.originY() + g.sizeY()))
+                throw MapLoadError(file, "obstacle " + std::to_string(i + 1) + " (" + sc.obstacles[i].name +
+                                             "): waypoint " + describe({x, y, 0.0}) + " is outside the map (x " +
+                                             std::to_string(g.originX()) + " .. " + std::to_string(g.originX() + g.sizeX()) +
+                                             ", y " + std::to_string(g.originY()) + " .. " +
+                                             std::to_string(g.originY() + g.sizeY()) + ")");
+    return sc;
+}
+
+void writeTrajectoryCsv(const std::string &file, const std::vector<TrajectorySample> &trajectory)
+{
+    std::ofstream f(file);
+    if (!f) throw InputError("cannot write " + file);
+    f << "t,x,y,yaw_rad,v,steer_rad\n";
+    f.precision(10);
+    for (const TrajectorySample &q : trajectory) f << q.t << "," << q.x << "," << q.y << "," << q.yaw << "," << q.v << "," << q.steer << "\n";
+}
+
 namespace
 {
 struct DriveOptions
@@ -118,19 +144,7 @@ int runDrive(const DriveOptions &o)
         throw InputError("--xi and --eta must be >= 0 and --rho0 > 0 (finite)");
     if (o.pathCsv.empty() && o.query.planner.empty()) throw InputError("give --planner NAME (with --start / --goal) or --path FILE (.csv, .yaml or .json)");
     Query query = loadQuery(o.query, o.pathCsv.empty());
-    Scenario sc;
-    if (!o.scenario.empty()) sc = Scenario::load(o.scenario);
-    // a waypoint off the map is a mistake in the file (a wrong frame, a typo), not a scenario
-    const OccupancyGrid &g = *query.grid;
-    for (std::size_t i = 0; i < sc.obstacles.size(); ++i)
-        for (const auto &[x, y] : sc.obstacles[i].waypoints)
-            if (!(x >= g.originX() && x <= g.originX() + g.sizeX() && y >= g.originY() && y <= g.originY() + g.sizeY()))
-                throw MapLoadError(o.scenario, "obstacle " + std::to_string(i + 1) + " (" + sc.obstacles[i].name +
-                                                   "): waypoint " + describe({x, y, 0.0}) +
-                                                   " is outside the map (x " + std::to_string(g.originX()) + " .. " +
-                                                   std::to_string(g.originX() + g.sizeX()) + ", y " +
-                                                   std::to_string(g.originY()) + " .. " +
-                                                   std::to_string(g.originY() + g.sizeY()) + ")");
+    const Scenario sc = loadScenarioOnMap(o.scenario, *query.grid);
     nlohmann::json j;
     std::vector<Pose2> path;
     if (!pathToDrive(o, query, path, j))
@@ -154,14 +168,7 @@ int runDrive(const DriveOptions &o)
                     "min clearance %.2f m, %d recoveries\n",
                     DriveResult::outcomeName(r.outcome).c_str(), r.reason.c_str(), r.drivingTime, r.pathLength,
                     r.distanceDriven, r.crossTrackMean, r.crossTrackMax, r.minClearance, r.recoveries);
-    if (!o.trajectoryCsv.empty())
-    {
-        std::ofstream f(o.trajectoryCsv);
-        if (!f) throw InputError("cannot write " + o.trajectoryCsv);
-        f << "t,x,y,yaw_rad,v,steer_rad\n";
-        f.precision(10);
-        for (const TrajectorySample &q : r.trajectory) f << q.t << "," << q.x << "," << q.y << "," << q.yaw << "," << q.v << "," << q.steer << "\n";
-    }
+    if (!o.trajectoryCsv.empty()) writeTrajectoryCsv(o.trajectoryCsv, r.trajectory);
     if (!o.png.empty()) drawDrive(query, path, r, sc, o.png);
     return r.outcome == DriveResult::Outcome::Reached ? 0 : 3;
 }

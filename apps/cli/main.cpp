@@ -70,7 +70,7 @@ int main(int argc, char **argv)
     app.set_version_flag("--version", versionText(), "Print gridcar's version and the OMPL it is built on, and exit");
     const std::vector<Command> commands = {addInfoCommand(app),    addGenmapCommand(app), addDemoCommand(app),
                                            addVehicleCommand(app), addPlanCommand(app),   addPlannersCommand(app),   addScenCommand(app),
-                                           addDriveCommand(app),   addBenchCommand(app),  addPaperICommand(app),
+                                           addDriveCommand(app),   addNavigateCommand(app), addBenchCommand(app),  addPaperICommand(app),
                                            addPaperCCommand(app)};
     try
     {
