@@ -79,37 +79,6 @@ struct Tally
     std::vector<double> arrivedTime;
 };
 
-/// A pedestrian (a disc) that crosses the path at its middle, perpendicular to it, and reaches
-/// the path when the vehicle would by the planned velocity profile; its size and speed scale
-/// with the vehicle (a person for a car, a small object for paper C's robot). It is walking for
-/// 8 s before it reaches the vehicle's lane (through walls if there are any: it is a moving
-/// obstacle, not a planner), so it can be seen coming; one that steps out from standing within
-/// the vehicle's braking distance could not be avoided by any follower.
-Scenario crossing(const std::vector<Pose2> &path, const VehicleParams &v)
-{
-    Scenario sc;
-    std::vector<double> cum{0.0};
-    for (std::size_t i = 1; i < path.size(); ++i)
-        cum.push_back(cum.back() + std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y));
-    if (path.size() < 2 || cum.back() < 1e-6) return sc;
-    const std::size_t mid = std::size_t(std::lower_bound(cum.begin(), cum.end(), cum.back() / 2) - cum.begin());
-    const std::size_t a = std::min(mid, path.size() - 2);
-    const double hx = path[a + 1].x - path[a].x, hy = path[a + 1].y - path[a].y, hn = std::hypot(hx, hy);
-    const double nx = -hy / hn, ny = hx / hn;
-    const double scale = std::clamp(v.length / 4.5, 0.1, 1.0);
-    MovingObstacle o;
-    o.name = "pedestrian";
-    o.radius = 0.3 * scale;
-    o.speed = 1.2 * scale;
-    const double side = 3.0 * scale + v.width, far = side + 8.0 * o.speed;
-    o.waypoints = {{path[mid].x - far * nx, path[mid].y - far * ny}, {path[mid].x + side * nx, path[mid].y + side * ny}};
-    std::vector<Pose2> firstHalf(path.begin(), path.begin() + std::ptrdiff_t(mid + 1));
-    const double arrive = firstHalf.size() > 1 ? drivingTime(firstHalf, v) : 0.0;
-    o.startTime = arrive - far / o.speed;  // negative: already walking at the start
-    sc.obstacles.push_back(o);
-    return sc;
-}
-
 double median(std::vector<double> v)
 {
     if (v.empty()) return NAN;
@@ -206,7 +175,7 @@ Tally runPlanner(const Options &o, const Area &area, GridSetup &setup, const std
             }
             for (int m = 0; m < (o.noMoving ? 1 : 2); ++m)
             {
-                const DriveResult d = drivePath(r.path, *setup.checker, m ? crossing(r.path, v) : Scenario());
+                const DriveResult d = drivePath(r.path, *setup.checker, m ? Scenario{{crossingPedestrian(r.path, v)}} : Scenario());
                 ++t.driven[m];
                 switch (d.outcome)
                 {
@@ -234,7 +203,7 @@ Tally runPlanner(const Options &o, const Area &area, GridSetup &setup, const std
                         if (FILE *f = std::fopen((stem + "-drive.csv").c_str(), "w"))
                         {
                             std::fprintf(f, "t,x,y,yaw,v,steer,ox,oy\n");
-                            const Scenario sc = m ? crossing(r.path, v) : Scenario();
+                            const Scenario sc = m ? Scenario{{crossingPedestrian(r.path, v)}} : Scenario();
                             for (const TrajectorySample &q : d.trajectory)
                             {
                                 double ox = NAN, oy = NAN;

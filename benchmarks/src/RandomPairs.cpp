@@ -1,10 +1,13 @@
 /// @file RandomPairs.cpp
-/// @brief randomPairs(): seeded start / goal pairs for the benchmark programs; loadAreaMap().
+/// @brief randomPairs(): seeded start / goal pairs for the benchmark programs; loadAreaMap();
+/// crossingPedestrian().
 #include "gridcar/bench/RandomPairs.h"
 
 #include "gridcar/map/CampusGenerator.h"
 #include "gridcar/map/MapIO.h"
+#include "gridcar/vehicle/Dynamics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <deque>
@@ -81,6 +84,29 @@ Pose2 withFittingYaw(const FootprintChecker &fc, Pose2 p)
     double yaw = p.yaw;
     if (fc.fitsAtSomeHeading(p.x, p.y, 72, &yaw)) p.yaw = yaw;
     return p;
+}
+
+MovingObstacle crossingPedestrian(const std::vector<Pose2> &path, const VehicleParams &v, double fraction)
+{
+    MovingObstacle o;
+    o.name = "pedestrian";
+    std::vector<double> cum{0.0};
+    for (std::size_t i = 1; i < path.size(); ++i)
+        cum.push_back(cum.back() + std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y));
+    if (path.size() < 2 || cum.back() < 1e-6) return o;
+    const std::size_t mid = std::size_t(std::lower_bound(cum.begin(), cum.end(), fraction * cum.back()) - cum.begin());
+    const std::size_t a = std::min(mid, path.size() - 2);
+    const double hx = path[a + 1].x - path[a].x, hy = path[a + 1].y - path[a].y, hn = std::hypot(hx, hy);
+    const double nx = -hy / hn, ny = hx / hn;
+    const double scale = std::clamp(v.length / 4.5, 0.1, 1.0);
+    o.radius = 0.3 * scale;
+    o.speed = 1.2 * scale;
+    const double side = 3.0 * scale + v.width, far = side + 8.0 * o.speed;
+    o.waypoints = {{path[mid].x - far * nx, path[mid].y - far * ny}, {path[mid].x + side * nx, path[mid].y + side * ny}};
+    std::vector<Pose2> firstHalf(path.begin(), path.begin() + std::ptrdiff_t(mid + 1));
+    const double arrive = firstHalf.size() > 1 ? drivingTime(firstHalf, v) : 0.0;
+    o.startTime = arrive - far / o.speed;  // negative: already walking at the start
+    return o;
 }
 
 }  // namespace gridcar

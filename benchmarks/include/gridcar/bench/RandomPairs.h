@@ -7,6 +7,7 @@
 #include "gridcar/collision/FootprintChecker.h"
 #include "gridcar/core/Pose2.h"
 #include "gridcar/map/OccupancyGrid.h"
+#include "gridcar/sim/Simulation.h"
 
 #include <memory>
 #include <string>
@@ -37,5 +38,14 @@ std::vector<std::pair<Pose2, Pose2>> randomPairs(const FootprintChecker &fc, int
 
 /// @p p with the first of 72 yaws at which the vehicle fits (unchanged when none does).
 Pose2 withFittingYaw(const FootprintChecker &fc, Pose2 p);
+
+/// A pedestrian (a disc) that crosses @p path at @p fraction of its length, perpendicular to
+/// it, and reaches the path when the vehicle would by the planned velocity profile; its size and
+/// speed scale with the vehicle (a person for a car, a small object for paper C's robot). It is
+/// walking for 8 s before it reaches the vehicle's lane (through walls if there are any: it is a
+/// moving obstacle, not a planner), so it can be seen coming; one that steps out from standing
+/// within the vehicle's braking distance could not be avoided by any follower. It stands still
+/// on the far side afterwards. (bench_drive at the middle, bench_navigate.)
+MovingObstacle crossingPedestrian(const std::vector<Pose2> &path, const VehicleParams &v, double fraction = 0.5);
 
 }  // namespace gridcar
