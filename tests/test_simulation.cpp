@@ -320,3 +320,21 @@ TEST(Simulation, AnInterruptStopsTheCarWhereItStandsAndTheClockGoesOn)
     EXPECT_NEAR(r.trajectory.back().t - 7.0, r.drivingTime, 1e-9);
     EXPECT_NEAR(r.trajectory.back().x, r.finalState.x, 1e-9);
 }
+
+// A heading tolerance at the goal: a path whose last pose turns 90 degrees on the spot (no car
+// can) ends Stuck with the heading named; without the tolerance it ends Reached as before.
+TEST(Simulation, AGoalHeadingToleranceIsChecked)
+{
+    GridSetup s = road(30.0, 4.0);
+    const double y = s.grid->cellCenterY(s.grid->height() / 2);
+    auto path = straight(5.0, 25.0, y);
+    path.back().yaw = M_PI / 2;
+    FollowerParams fp;
+    EXPECT_EQ(drivePath(path, *s.checker, Scenario(), fp).outcome, DriveResult::Outcome::Reached);
+    fp.goalYawTolerance = 0.25;
+    const DriveResult r = drivePath(path, *s.checker, Scenario(), fp);
+    EXPECT_EQ(r.outcome, DriveResult::Outcome::Stuck);
+    EXPECT_NE(r.reason.find("heading"), std::string::npos) << r.reason;
+    path.back().yaw = 0.1;
+    EXPECT_EQ(drivePath(path, *s.checker, Scenario(), fp).outcome, DriveResult::Outcome::Reached);
+}

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -117,6 +118,7 @@ struct DriveRun
         if (manoeuvring) follower.capSpeed(follower.crawl());
         double blockedSince = -1.0;
         int backUps = 0;
+        bool stopping = false;  // interrupted, braking
         // a piece ending at a cusp ends where the next one starts: much closer than the goal
         // tolerance, or the next piece starts off its path with no steering reserve
         const double tolHere = last ? tol : std::min(tol, 0.1);
@@ -136,7 +138,10 @@ struct DriveRun
             ctSum += crossTrack;
             res.crossTrackMax = std::max(res.crossTrackMax, crossTrack);
             ++steps;
-            if (prm.interrupt && prm.interrupt(backward ? turnedRound(st) : st, t)) return stop(follower, veh, st, backward);
+            // interrupted: brake to a standstill, still steering along the path (a car braking
+            // from speed with its wheels held leaves a curved road)
+            if (!stopping && prm.interrupt && prm.interrupt(backward ? turnedRound(st) : st, t)) stopping = true;
+            if (stopping && std::abs(st.v) <= 1e-9) return interrupted(follower, st);
             const Pose2 &end = path.pts.back();
             const double toEnd = std::hypot(st.x - end.x, st.y - end.y);
             // a cusp: within 0.1 m, or once stopped at the end beside it (the speed command stops
@@ -184,7 +189,7 @@ struct DriveRun
             }
             const double err = wrapAngle(std::atan2(fy, fx) - st.yaw - bend);
             const double steerCmd = feedForward + prm.headingGain * err + crossTerm;
-            const double vCmd = follower.speedCommand(st, t, err, steerCmd, rhoMin, tolHere);
+            const double vCmd = stopping ? 0.0 : follower.speedCommand(st, t, err, steerCmd, rhoMin, tolHere);
             double steerUse, vUse;
             follower.safeCommand(st, t, steerCmd, vCmd, steerUse, vUse,
                                  path.followable ? feedForward + headingTerm + crossTerm : steerCmd);
@@ -208,12 +213,9 @@ struct DriveRun
         }
     }
 
-    /// The run interrupted: the car brakes to a standstill with its wheels held. False always
-    /// (res says Interrupted, or what the body hit while it braked).
-    bool stop(const detail::Follower &follower, const VehicleParams &veh, VehicleState &st, bool backward)
+    /// The run interrupted, the car at a standstill: false (res says Interrupted).
+    bool interrupted(const detail::Follower &follower, const VehicleState &st)
     {
-        while (st.v > 1e-9)
-            if (!step(follower, veh, st, st.steer, 0.0, backward)) return false;
         res.outcome = DriveResult::Outcome::Interrupted;
         res.reason = "interrupted at " + follower.where(st);
         return false;
@@ -333,12 +335,21 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         backward = pieces[k].backward;
         ok = run.piece(*tracked[k], run.checkerFor(backward), st, backward, k + 1 == pieces.size());
     }
-    if (ok)
+    if (backward) st = turnedRound(st);
+    const double headingOff = std::abs(wrapAngle(st.yaw - pathIn.back().yaw));
+    if (ok && prm.goalYawTolerance > 0 && headingOff > prm.goalYawTolerance)
+    {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "stopped at the goal with the heading %.1f deg off the path's end (goal yaw tolerance %.1f deg)",
+                      headingOff * 180 / M_PI, prm.goalYawTolerance * 180 / M_PI);
+        res.outcome = DriveResult::Outcome::Stuck;
+        res.reason = buf;
+    }
+    else if (ok)
     {
         res.outcome = DriveResult::Outcome::Reached;
         res.reason = "reached the goal";
     }
-    if (backward) st = turnedRound(st);
     res.finalState = st;
     res.drivingTime = run.t - prm.startTime;
     res.crossTrackMean = run.steps ? run.ctSum / double(run.steps) : 0.0;

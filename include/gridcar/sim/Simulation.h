@@ -76,6 +76,9 @@ struct FollowerParams
     /// (1/s; Stanley's term), so a lateral offset is steered back at any look-ahead. 0: off
     double crossTrackGain{1.0};
     double goalTolerance{0.0};  ///< m; 0 = max(0.3 m, a cell)
+    /// rad: a run that stops at the goal with its heading further than this from the path's
+    /// last pose ends Stuck, not Reached; 0: the heading is not checked
+    double goalYawTolerance{0.0};
     double stuckWindow{6.0};    ///< s without progress along the path before a recovery
     int maxRecoveries{3};       ///< recoveries before the run is declared stuck
     double timeLimit{0.0};      ///< s; 0 = 50 s + per piece 10 s + max(5 x length / v_max, 3 x planned driving time)
