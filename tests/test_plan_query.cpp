@@ -112,3 +112,23 @@ TEST(PlanQuery, RunQueryReportsSmoothingAndTheRawPath)
     EXPECT_GE(q.smoothingSeconds, 0.0);
     EXPECT_LE(q.smoothingSeconds, q.seconds);
 }
+
+// A goal tolerance: the goal pose on an obstacle is no goal for an exact query, and with a
+// tolerance the path ends within it, free; a negative tolerance is refused.
+TEST(PlanQuery, AGoalToleranceLetsThePathEndWithinIt)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    auto g = std::make_shared<OccupancyGrid>(200, 100, 0.1, CellState::Free);
+    for (int r = 40; r < 60; ++r)
+        for (int c = 140; c < 160; ++c) g->set(c, r, CellState::Occupied);  // a 2 x 2 m block at x 14-16, y 4-6
+    GridSetup s = makeGridSetup(g, VehicleParams::preset("paper-c-robot"));
+    auto p = configurePlanner(s.ss->getSpaceInformation(), {"corner-astar", {}, false, false});
+    const Pose2 start{2.0, 5.0, 0.0}, goal{15.0, 5.0, 0.0};
+    EXPECT_NE(runQuery(s, p, start, goal, 2.0).status, ompl::base::PlannerStatus::EXACT_SOLUTION);
+    const QueryResult q = runQuery(s, p, start, goal, 2.0, false, GoalTolerance{1.8, M_PI});
+    ASSERT_EQ(q.status, ompl::base::PlannerStatus::EXACT_SOLUTION) << q.status.asString();
+    EXPECT_LE(std::hypot(q.path.back().x - goal.x, q.path.back().y - goal.y), 1.8 + 1e-6);
+    EXPECT_TRUE(q.drivability.drivable) << q.drivability.reason;
+    EXPECT_THROW(s.setStartAndGoal(start, goal, false, GoalTolerance{-1.0, 0.0}), std::invalid_argument);
+    EXPECT_THROW(s.setStartAndGoal(start, goal, false, GoalTolerance{0.5, NAN}), std::invalid_argument);
+}

@@ -10,6 +10,9 @@
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/util/Console.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace gridcar
 {
 GoalAdapter::GoalAdapter(ompl::base::SpaceInformationPtr si) : si_(std::move(si)), scratch_(si_->allocState()) {}
@@ -47,8 +50,26 @@ ompl::base::PlannerStatus GoalAdapter::read(const ompl::base::Goal *goal, bool m
         out.pose = {pg->x(), pg->y(), pg->yaw()};
         out.yawTolerance = pg->yawTolerance();
         out.positionTolerance = pg->positionTolerance();
-        const bool ok = pg->freeHeading() ? collision.fitsAtSomeHeading(out.pose.x, out.pose.y, 72) : collision.poseFree(out.pose);
-        return ok ? PlannerStatus(PlannerStatus::UNKNOWN) : invalid("the vehicle fits at no allowed heading at the goal position");
+        const auto fits = [&](const Pose2 &p) {
+            if (pg->freeHeading()) return collision.fitsAtSomeHeading(p.x, p.y, 72);
+            if (collision.poseFree(p)) return true;
+            for (double d : {-pg->yawTolerance(), pg->yawTolerance()})  // either end of a heading tolerance
+                if (d != 0.0 && collision.poseFree({p.x, p.y, p.yaw + d})) return true;
+            return false;
+        };
+        if (fits(out.pose)) return PlannerStatus::UNKNOWN;
+        // the goal position blocked but a tolerance round it: aim at the nearest position within
+        // it where the vehicle fits (at most 60 rings, 5 cm apart or more, 5 degrees round), the
+        // region deciding
+        const double tol = out.positionTolerance, step = std::max(0.05, tol / 60);
+        for (double r = step; r <= tol + 1e-9; r += step)
+            for (int k = 0; k < 72; ++k)
+            {
+                const Pose2 p{out.pose.x + r * std::cos(k * M_PI / 36), out.pose.y + r * std::sin(k * M_PI / 36), out.pose.yaw};
+                if (fits(p)) return out.pose = p, PlannerStatus(PlannerStatus::UNKNOWN);
+            }
+        return invalid(tol > 0 ? "the vehicle fits at no allowed heading within the goal's position tolerance"
+                               : "the vehicle fits at no allowed heading at the goal position");
     }
     if (const auto *gs = dynamic_cast<const ompl::base::GoalState *>(goal))
     {

@@ -150,12 +150,12 @@ std::vector<Pose2> solutionPoses(const GridSetup &setup, const ompl::base::Plann
 }
 
 QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &start, const Pose2 &goal,
-                     double timeLimit, bool freeGoalHeading)
+                     double timeLimit, bool freeGoalHeading, const GoalTolerance &tolerance)
 {
     using Clock = std::chrono::steady_clock;
     QueryResult q;
     setup.ss->clear();
-    setup.setStartAndGoal(start, goal, freeGoalHeading);
+    setup.setStartAndGoal(start, goal, freeGoalHeading, tolerance);
     setup.ss->setPlanner(planner);
     const auto t0 = Clock::now();
     q.status = setup.ss->solve(timeLimit);

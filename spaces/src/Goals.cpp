@@ -5,6 +5,7 @@
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -32,6 +33,17 @@ double PositionGoal::distanceGoal(const ompl::base::State *st) const
         if (excess > 0) d += excess;
     }
     return d;
+}
+
+bool PositionGoal::isSatisfied(const ompl::base::State *st, double *distance) const
+{
+    const auto *s = st->as<ompl::base::SE2StateSpace::StateType>();
+    const double d = std::hypot(s->getX() - x_, s->getY() - y_);
+    const double excess = yawTol_ >= 0 ? std::abs(wrapAngle(s->getYaw() - yaw_)) - yawTol_ : 0.0;
+    if (distance) *distance = d + std::max(0.0, excess);
+    // both tolerances on their own: a heading out of its tolerance is not made up for by a
+    // position well within its own (distanceGoal() adds them, for ranking states only)
+    return d <= getThreshold() && excess <= 1e-12;
 }
 
 void PositionGoal::sampleGoal(ompl::base::State *st) const

@@ -8,6 +8,7 @@
 
 #include <ompl/base/ScopedState.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -50,16 +51,21 @@ GridSetup makeGridSetup(std::shared_ptr<const OccupancyGrid> grid, const Vehicle
     return s;
 }
 
-void GridSetup::setStartAndGoal(const Pose2 &start, const Pose2 &goal, bool freeGoalHeading) const
+void GridSetup::setStartAndGoal(const Pose2 &start, const Pose2 &goal, bool freeGoalHeading, const GoalTolerance &tolerance) const
 {
+    if (!std::isfinite(tolerance.position) || tolerance.position < 0 || !std::isfinite(tolerance.yaw) || tolerance.yaw < 0)
+        throw std::invalid_argument("goal tolerance (" + std::to_string(tolerance.position) + " m, " + std::to_string(tolerance.yaw) +
+                                    " rad) must be finite and >= 0");
     ompl::base::ScopedState<ompl::base::SE2StateSpace> a(ss->getStateSpace()), b(ss->getStateSpace());
     a->setXY(start.x, start.y);
     a->setYaw(wrapYaw(start.yaw));  // OMPL's SO(2) bounds are [-pi, pi): a yaw of +pi is out of them
-    if (freeGoalHeading)
+    if (freeGoalHeading || !tolerance.exact())
     {
         ss->clearStartStates();
         ss->addStartState(a);
-        ss->setGoal(std::make_shared<PositionGoal>(ss->getSpaceInformation(), goal.x, goal.y, 1e-6, wrapYaw(goal.yaw), -1.0));
+        const double yawTol = freeGoalHeading ? -1.0 : std::min(tolerance.yaw, M_PI);
+        ss->setGoal(std::make_shared<PositionGoal>(ss->getSpaceInformation(), goal.x, goal.y, std::max(1e-6, tolerance.position),
+                                                   wrapYaw(goal.yaw), yawTol));
         return;
     }
     b->setXY(goal.x, goal.y);

@@ -349,10 +349,10 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
 
 std::string CarLatticeSearch::provenUnreachable(const CarLatticeQuery &q, bool &startShutIn)
 {
-    // one goal position (a GoalState, or a PositionGoal whose tolerance is under half a cell:
-    // the reference point at the goal, at its heading or any) on gridcar's checker
+    // one goal position (a GoalState, or a PositionGoal within a micrometre: the reference
+    // point at the goal, at its heading or any) on gridcar's checker
     if (!q.map || !q.aim || !q.shoot) return "";
-    if (q.inGoal && !(q.goalPositionTolerance >= 0 && q.goalPositionTolerance < 0.5 * q.map->grid().resolution())) return "";
+    if (q.inGoal && !(q.goalPositionTolerance >= 0 && q.goalPositionTolerance <= 1e-6)) return "";
     constexpr std::size_t kProofCells = std::size_t(1) << 22;
     const FootprintChecker::Reach r =
         q.map->reachability(q.start, q.freeStartHeading, q.goal, q.goalYawTolerance != 0, kProofCells);

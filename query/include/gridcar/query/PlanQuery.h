@@ -82,9 +82,10 @@ struct QueryResult
 /// must be valid: the caller checks) and measures the path (computePathMetrics(), and
 /// checkDrivable() when there is one).
 /// With @p freeGoalHeading the goal is a position at any heading (a query given without a goal
-/// yaw), else the goal pose with its yaw (GridSetup::setStartAndGoal()).
+/// yaw), else the goal pose with its yaw (GridSetup::setStartAndGoal()); a @p tolerance that is
+/// not exact lets the path end within it.
 QueryResult runQuery(GridSetup &setup, const ompl::base::PlannerPtr &planner, const Pose2 &start, const Pose2 &goal,
-                     double timeLimit, bool freeGoalHeading = false);
+                     double timeLimit, bool freeGoalHeading = false, const GoalTolerance &tolerance = GoalTolerance());
 
 /// The poses of the set-up's solution path: on a Dubins / Reeds-Shepp space an OMPL planner's
 /// states with the poses along the curves between them (at most the validity resolution

@@ -22,6 +22,15 @@ struct SetupOptions
     SpaceKind space{SpaceKind::SE2};
 };
 
+/// How near the goal a path may end (Nav2's goal checker: xy_goal_tolerance 0.25 m,
+/// yaw_goal_tolerance 0.25 rad by default there). The default here stays exact.
+struct GoalTolerance
+{
+    double position{0.0};  ///< m from the goal position (0: the position itself)
+    double yaw{0.0};       ///< rad from the goal heading, when the goal has one (0: that heading)
+    bool exact() const { return position <= 0.0 && yaw <= 0.0; }
+};
+
 /// Everything a planning problem on a grid map needs, shared by every planner.
 struct GridSetup
 {
@@ -40,8 +49,11 @@ struct GridSetup
     /// Sets start and goal poses (world frame, yaw in radians) on the SimpleSetup: the goal as
     /// a GoalState, or with @p freeGoalHeading as a PositionGoal at any heading (its position
     /// within 1 micrometre; OMPL's planners sample it at the first of 72 yaws where the car
-    /// fits).
-    void setStartAndGoal(const Pose2 &start, const Pose2 &goal, bool freeGoalHeading = false) const;
+    /// fits). With a @p tolerance that is not exact the goal is a PositionGoal within
+    /// tolerance.position of the goal (a micrometre at 0) and, with a heading, within
+    /// tolerance.yaw of it; std::invalid_argument on a negative or non-finite tolerance.
+    void setStartAndGoal(const Pose2 &start, const Pose2 &goal, bool freeGoalHeading = false,
+                         const GoalTolerance &tolerance = GoalTolerance()) const;
 };
 
 /**

@@ -208,7 +208,7 @@ struct CarLatticeResult
  * still returns the explored state nearest the goal (an approximate solution) rather than
  * trusting a relaxation to prove the goal unreachable.
  * Fast failure: where the 2D graph does not join start and goal and the goal is one position
- * (a GoalState, or a PositionGoal whose tolerance is under half a cell) on gridcar's checker,
+ * (a GoalState, or a PositionGoal within a micrometre, as a goal without a heading is) on gridcar's checker,
  * FootprintChecker::reachability() (the body's inscribed disc over 8-connected cells, a proof for any motion, forwards or backwards, at any
  * resolution) is asked, within 4 M cells; when it proves the ends apart the run returns at once
  * with CarLatticeResult::unreachable saying why, and the planner runs no fallback search (it
