@@ -174,10 +174,10 @@ void run(const Options &o, const Area &a)
             t.replanSeconds.insert(t.replanSeconds.end(), r.replanSeconds.begin(), r.replanSeconds.end());
             if (r.outcome == NavigationResult::Outcome::Reached && std::isfinite(knownTime)) t.timeRatio.push_back(r.drivingTime / knownTime);
             std::fprintf(stderr, "%s %s pair %zu%s: --start %.2f,%.2f,%.1f --goal %.2f,%.2f, box %.2f x %.2f m at %.2f,%.2f, %s (%s), "
-                                 "%d replans, %.1f s driven (known in advance %.1f s), worst clearance %.2f m, %.1f s wall\n",
+                                 "%d replans, %d retreats, %.1f s driven (known in advance %.1f s), worst clearance %.2f m, %.1f s wall\n",
                          a.area.name.c_str(), a.area.vehicle.c_str(), k, ped ? " + pedestrian" : "", s.x, s.y, s.yaw * 180 / M_PI, g.x,
                          g.y, bx, by, c.x, c.y,
-                         NavigationResult::outcomeName(r.outcome).c_str(), r.reason.c_str(), r.replans, r.drivingTime, knownTime,
+                         NavigationResult::outcomeName(r.outcome).c_str(), r.reason.c_str(), r.replans, r.retreats, r.drivingTime, knownTime,
                          worst, wall);
         }
     }

@@ -85,6 +85,14 @@ run_gridcar(3 navigate --map "${WORK}/campus.yaml" --vehicle paper-c-robot --sta
             --scenario "${WORK}/pallet.yaml" --json --time-limit 2)
 expect_in("${OUT}" "\"outcome\":\"goal blocked\"")
 expect_in("${OUT}" "\"nearest_reachable\":{")
+# the same goal with a tolerance (Nav2's goal checker): arrived beside the pallet
+run_gridcar(0 navigate --map "${WORK}/campus.yaml" --vehicle paper-c-robot --start 506.749,380.993 --goal 532,368.5
+            --scenario "${WORK}/pallet.yaml" --goal-tolerance 3.5 --json --time-limit 2)
+expect_in("${OUT}" "\"outcome\":\"reached\"")
+run_gridcar(2 navigate ${Q} --goal-tolerance 0.25,abc)
+expect_in("${ERR}" "--goal-tolerance '0.25,abc'")
+run_gridcar(2 plan ${Q} --planner corner-astar --goal-tolerance 0.25,200)
+expect_in("${ERR}" "YAW in [0, 180] deg")
 run_gridcar(2 navigate ${Q} --range 0)
 expect_in("${ERR}" "--range must be > 0 m")
 run_gridcar(2 navigate ${Q} --scenario "${WORK}/bad.yaml")

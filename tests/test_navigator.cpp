@@ -120,3 +120,29 @@ TEST(Navigator, APedestrianCrossingIsLeftToTheFollower)
     EXPECT_GT(worstClearance(r, nav.worldChecker(), sc), 0.0);
     EXPECT_EQ(r.replans, 0);  // standing by the walls before and after, never on the route
 }
+
+// The same goal with a tolerance (Nav2's goal checker): the car stops beside the pallet within
+// it, and every plan ended within it; a tolerance the pallet leaves no room in is still blocked.
+TEST(Navigator, AGoalToleranceIsHonouredByThePlansAndTheDrive)
+{
+    Scenario sc;
+    sc.obstacles.push_back(standingBox(30.0, 6.0, 2.0, 2.0));
+    NavigationOptions o;
+    o.planTimeLimit = 2.0;
+    o.goalTolerance = {2.0, 0.0};
+    Navigator nav(hall(), VehicleParams::preset("paper-c-robot"), o);
+    const NavigationResult r = nav.run({3.0, 6.0, 0.0}, {30.0, 6.0, 0.0}, true, sc);
+    ASSERT_EQ(r.outcome, NavigationResult::Outcome::Reached) << r.reason;
+    EXPECT_LE(std::hypot(r.finalPose.x - 30.0, r.finalPose.y - 6.0), 2.0 + 1e-9);
+    for (const std::vector<Pose2> &p : r.plans) EXPECT_LE(std::hypot(p.back().x - 30.0, p.back().y - 6.0), 2.0 + 1e-6);
+    EXPECT_GT(worstClearance(r, nav.worldChecker(), sc), 0.0);
+    // a heading tolerance: the last plan ends within 20 degrees of the goal's heading
+    NavigationOptions h = o;
+    h.goalTolerance = {0.5, 20.0 * M_PI / 180.0};
+    Navigator nav2(hall(), VehicleParams::preset("paper-c-robot"), h);
+    const NavigationResult r2 = nav2.run({3.0, 6.0, 0.0}, {20.0, 6.0, M_PI / 2}, false, Scenario());
+    ASSERT_EQ(r2.outcome, NavigationResult::Outcome::Reached) << r2.reason;
+    EXPECT_LE(std::abs(std::remainder(r2.plans.back().back().yaw - M_PI / 2, 2 * M_PI)), 20.0 * M_PI / 180.0 + 1e-6);
+    EXPECT_LE(std::abs(std::remainder(r2.finalPose.yaw - M_PI / 2, 2 * M_PI)), 20.0 * M_PI / 180.0 + 1e-6);
+    EXPECT_LE(std::hypot(r2.finalPose.x - 20.0, r2.finalPose.y - 6.0), 0.5 + 1e-9);
+}

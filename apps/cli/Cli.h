@@ -54,6 +54,7 @@ struct QueryArgs
     bool unknownFree{false};
     std::string planner;
     std::string start, startCell, goal, goalCell;
+    std::string goalTolerance;    ///< --goal-tolerance XY[,YAW]
     std::string vehicle{"paper-i"};
     std::vector<std::string> params;
     double timeLimit{10.0};
@@ -80,6 +81,7 @@ struct Query
     Pose2 start, goal;
     bool startYaw{false};  ///< the start's yaw was given (else: free start heading)
     bool goalYaw{false};   ///< the goal's yaw was given
+    GoalTolerance goalTolerance;  ///< --goal-tolerance (default exact)
 };
 /// Loads the map and the vehicle, reads start and goal (with @p withPoses; InputError on
 /// malformed ones) and builds the setup. A start or goal without a yaw gets the first yaw (5
@@ -96,6 +98,8 @@ ompl::base::PlannerPtr queryPlanner(const QueryArgs &q, const Query &query);
 // ------------------------------------------------------------------ parsing helpers
 /// "A,B[,C]" -> numbers; throws InputError naming the option.
 std::vector<double> parseNumbers(const std::string &text, const std::string &option, std::size_t minN, std::size_t maxN);
+/// --goal-tolerance XY[,YAW] (YAW in degrees or with its unit: deg, rad); InputError when malformed or out of range.
+GoalTolerance parseGoalTolerance(const std::string &text);
 /// A pose from --X (world X,Y[,YAW]) or --X-cell (COL,ROW[,HEADING]); exactly one must be given. The
 /// yaw is in degrees unless it ends in its unit (90deg, 1.5708rad).
 /// @p rowsFromBottom: ROW counts from the map origin's row (ROS's order), else from the image's top.

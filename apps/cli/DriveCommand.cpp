@@ -118,7 +118,8 @@ bool pathToDrive(const DriveOptions &o, Query &query, std::vector<Pose2> &path, 
     for (const auto &[what, pose] : {std::make_pair(std::string("start"), query.start), std::make_pair(std::string("goal"), query.goal)})
         if (const std::string why = whyInvalid(query, pose, what == "start" ? !query.startYaw : !query.goalYaw); !why.empty())
             throw InputError(what + " " + describe(pose) + " is " + why);
-    const QueryResult q = runQuery(query.setup, queryPlanner(p, query), query.start, query.goal, p.timeLimit, !query.goalYaw);
+    const QueryResult q = runQuery(query.setup, queryPlanner(p, query), query.start, query.goal, p.timeLimit, !query.goalYaw,
+                                   query.goalTolerance);
     DrivingTimeParams profile;
     profile.reversing = query.setup.reversing();  // a stop at each Reeds-Shepp cusp
     j["plan"] = {{"planner", p.planner},         {"status", q.status.asString()}, {"cost", q.cost},
@@ -158,6 +159,8 @@ int runDrive(const DriveOptions &o)
     fp.xi = o.xi;
     fp.eta = o.eta;
     fp.rho0 = o.rho0;
+    if (query.goalTolerance.position > 0) fp.goalTolerance = query.goalTolerance.position;
+    if (query.goalTolerance.yaw > 0 && query.goalYaw) fp.goalYawTolerance = query.goalTolerance.yaw;
     const DriveResult r = drivePath(path, *query.setup.checker, sc, fp);
     const nlohmann::json dj = driveJson(r);  // (items() of a temporary would dangle)
     for (const auto &kv : dj.items()) j[kv.key()] = kv.value();

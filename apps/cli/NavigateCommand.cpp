@@ -42,7 +42,7 @@ void drawNavigation(const Query &query, const NavigationResult &r, const Scenari
                     const std::string &png)
 {
     bench::Figure fig;
-    fig.title = "navigate: " + NavigationResult::outcomeName(r.outcome) + ", " + std::to_string(r.replans) + " replans";
+    fig.title = "navigate: " + NavigationResult::outcomeName(r.outcome) + ", " + std::to_string(r.replans) + (r.replans == 1 ? " replan" : " replans");
     fig.vehicle = query.vehicle;
     fig.start = query.start;
     fig.goal = query.goal;
@@ -107,6 +107,7 @@ int runNavigate(const NavigateOptions &o)
     no.planner.smooth = qa.smooth;
     no.setup.space = query.setup.kind;
     no.planTimeLimit = qa.timeLimit;
+    no.goalTolerance = query.goalTolerance;
     no.sensor = o.sensor;
     no.maxReplans = o.maxReplans;
     Navigator nav(query.grid, query.vehicle, no, world);
@@ -122,6 +123,7 @@ int runNavigate(const NavigateOptions &o)
                          {"min_clearance", r.minClearance},
                          {"replans", r.replans},
                          {"stalls", r.stalls},
+                         {"retreats", r.retreats},
                          {"replan_seconds", r.replanSeconds},
                          {"sensed_cells", r.sensedCells},
                          {"final_pose", {{"x", r.finalPose.x}, {"y", r.finalPose.y}, {"yaw_rad", r.finalPose.yaw}}}};
@@ -132,9 +134,9 @@ int runNavigate(const NavigateOptions &o)
     else
     {
         std::printf("%s: %s; %.2f s of driving, %.1f m driven, min clearance %.2f m; %d replans (update + search median %.1f ms, "
-                    "max %.1f ms), %zu cells seen that the map did not show\n",
+                    "max %.1f ms), %d retreats, %zu cells seen that the map did not show\n",
                     NavigationResult::outcomeName(r.outcome).c_str(), r.reason.c_str(), r.drivingTime, r.distanceDriven,
-                    std::isfinite(r.minClearance) ? r.minClearance : 0.0, r.replans, 1e3 * med, 1e3 * worst, r.sensedCells);
+                    std::isfinite(r.minClearance) ? r.minClearance : 0.0, r.replans, 1e3 * med, 1e3 * worst, r.retreats, r.sensedCells);
         if (r.hasNearestReachable) std::printf("nearest reachable pose: %s\n", describe(r.nearestReachable).c_str());
     }
     if (!o.trajectoryCsv.empty()) writeTrajectoryCsv(o.trajectoryCsv, r.trajectory);
@@ -160,7 +162,8 @@ Command addNavigateCommand(CLI::App &app)
     c->add_option("--max-replans", o->maxReplans, "Replans before the run ends as stuck")->capture_default_str();
     c->add_flag("--json", o->json,
                 "Print one JSON object: outcome (reached | goal blocked | no path | collided | stuck | timeout), reason, "
-                "driving_time, distance_driven, min_clearance, replans, stalls, replan_seconds (each: the map updates "
+                "driving_time, distance_driven, min_clearance, replans, stalls, retreats (backing up along the track where no plan "
+                "started), replan_seconds (each: the map updates "
                 "since the last plan + the search), sensed_cells, final_pose, nearest_reachable (a blocked goal)");
     c->add_option("--png", o->png, "Picture (axes in metres, legend): the first plan (blue), the last (green), the drive (red, "
                                    "with the vehicle's outline), the obstacles at the end (orange), the cells the sensor "

@@ -71,6 +71,10 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
     cmd->add_option("--start-cell", q.startCell, "Start COL,ROW[,HEADING] (row 0 = top image row; see --row-order; heading as --start's yaw)");
     cmd->add_option("--goal", q.goal, "Goal X,Y[,YAW] (yaw as --start's): with a yaw the car-lattice planners (and OMPL's) arrive at that heading (--param match_goal_heading=0 relaxes it); without one, at any heading where the vehicle fits");
     cmd->add_option("--goal-cell", q.goalCell, "Goal COL,ROW[,HEADING]");
+    cmd->add_option("--goal-tolerance", q.goalTolerance,
+                    "XY[,YAW]: the path may end within XY m of the goal and, with a goal yaw, within YAW of its heading "
+                    "(degrees, or with its unit: 0.25rad), as Nav2's goal checker (xy_goal_tolerance 0.25, "
+                    "yaw_goal_tolerance 0.25 rad); drive and navigate stop within it. Default: exact");
     cmd->add_option("--row-order", q.rowOrder,
                     "Which row --start-cell / --goal-cell count from: top (row 0 = the image's first row) or bottom "
                     "(row 0 = the map origin's row, as ROS's OccupancyGrid data and map_server count)")
@@ -129,6 +133,7 @@ Query loadQuery(const QueryArgs &q, bool withPoses)
         const bool bottom = q.rowOrder == "bottom";
         query.start = parsePose(q.start, q.startCell, "start", *query.grid, query.startYaw, bottom);
         query.goal = parsePose(q.goal, q.goalCell, "goal", *query.grid, query.goalYaw, bottom);
+        if (!q.goalTolerance.empty()) query.goalTolerance = parseGoalTolerance(q.goalTolerance);
     }
     SetupOptions so;
     so.space = parseSpaceKind(q.space);
@@ -204,6 +209,24 @@ std::vector<double> parseNumbers(const std::string &text, const std::string &opt
         throw InputError(option + " '" + text + "': expected " + std::to_string(minN) +
                          (maxN > minN ? " or " + std::to_string(maxN) : std::string()) + " comma-separated numbers");
     return v;
+}
+
+GoalTolerance parseGoalTolerance(const std::string &text)
+{
+    std::string t = text;
+    double yawUnit = M_PI / 180.0;
+    for (const auto &[suffix, unit] : {std::make_pair(std::string("rad"), 1.0), std::make_pair(std::string("deg"), M_PI / 180.0)})
+        if (t.size() > suffix.size() && t.compare(t.size() - suffix.size(), suffix.size(), suffix) == 0)
+        {
+            t.resize(t.size() - suffix.size());
+            yawUnit = unit;
+            break;
+        }
+    const auto v = parseNumbers(t, "--goal-tolerance", 1, 2);
+    GoalTolerance tol{v[0], v.size() == 2 ? v[1] * yawUnit : 0.0};
+    if (!(tol.position >= 0) || tol.position > 1e3 || !(tol.yaw >= 0) || tol.yaw > M_PI + 1e-9)
+        throw InputError("--goal-tolerance '" + text + "': XY in [0, 1000] m, YAW in [0, 180] deg");
+    return tol;
 }
 
 Pose2 parsePose(const std::string &world, const std::string &cell, const std::string &which, const OccupancyGrid &g,

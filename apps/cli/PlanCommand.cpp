@@ -177,7 +177,8 @@ int planAndReport(const PlanOptions &o, bool &printed)
         printed = o.json;
         throw InputError(msg);
     }
-    const QueryResult q = runQuery(query.setup, planner, query.start, query.goal, o.query.timeLimit, !query.goalYaw);
+    const QueryResult q = runQuery(query.setup, planner, query.start, query.goal, o.query.timeLimit, !query.goalYaw,
+                                   query.goalTolerance);
     if (o.json)
     {
         nlohmann::json j = resultJson(q, query);

@@ -1,6 +1,8 @@
 // The navigation loop: plan, drive, sense, update the working map in place, replan.
 #include "gridcar/query/Navigate.h"
 
+#include "gridcar/core/Angles.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -58,6 +60,22 @@ struct Navigator::Impl
         res.updateSeconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         return true;
     }
+
+    /// Drives @p path in the true world from time @p t on; the trajectory, time, distance and
+    /// clearance added to @p res, @p t and @p at moved to where the car stopped.
+    DriveResult drive(const std::vector<Pose2> &path, const FollowerParams &fp, const Scenario &sc, NavigationResult &res,
+                      double &t, Pose2 &at)
+    {
+        const DriveResult d = drivePath(path, *worldChecker, sc, fp);
+        res.trajectory.insert(res.trajectory.end(), d.trajectory.begin(), d.trajectory.end());
+        t += d.drivingTime;
+        res.drivingTime = t;
+        res.distanceDriven += d.distanceDriven;
+        res.minClearance = std::min(res.minClearance, d.minClearance);
+        at = {d.finalState.x, d.finalState.y, d.finalState.yaw};
+        res.finalPose = at;
+        return d;
+    }
 };
 
 namespace
@@ -65,6 +83,8 @@ namespace
 /// A plan that fails with cells the sensor added within this distance (m) of the body's reach
 /// round the goal ends the run as GoalBlocked: what the map did not show stands at the goal.
 constexpr double kGoalNear = 1.5;
+/// A retreat backs up this many vehicle lengths plus a metre along the track driven.
+constexpr double kRetreat = 2.0;
 
 /// Index of the path pose nearest (x, y), searched from @p from on over the next 10 m.
 std::size_t nearestAhead(const std::vector<Pose2> &path, std::size_t from, double x, double y)
@@ -78,6 +98,37 @@ std::size_t nearestAhead(const std::vector<Pose2> &path, std::size_t from, doubl
         if (d < bestD) best = i, bestD = d;
     }
     return best;
+}
+
+/// The way back along the track driven (the trajectory's poses from its end, 5 cm apart at
+/// the least), as long as the body is free in the working map at each pose, up to @p length m:
+/// a path that retraces the drive in the other gear.
+std::vector<Pose2> retreatPath(const std::vector<TrajectorySample> &track, const FootprintChecker &work, double length)
+{
+    std::vector<Pose2> out;
+    double along = 0.0;
+    for (std::size_t i = track.size(); i-- > 0 && along < length;)
+    {
+        const Pose2 p{track[i].x, track[i].y, track[i].yaw};
+        if (!work.isValid(p)) break;
+        if (!out.empty())
+        {
+            const double d = std::hypot(p.x - out.back().x, p.y - out.back().y);
+            if (d < 0.05) continue;
+            along += d;
+        }
+        out.push_back(p);
+    }
+    return out;
+}
+
+/// Within the tolerance of the goal: the position within the larger of the tolerance and the
+/// follower's (the path ends within the one, the car within the other of the path's end), the
+/// heading within its tolerance.
+bool arrived(const Pose2 &at, const Pose2 &goal, bool freeHeading, const GoalTolerance &tol, double followerTol)
+{
+    if (std::hypot(at.x - goal.x, at.y - goal.y) > std::max(tol.position, followerTol) + 1e-9) return false;
+    return freeHeading || std::abs(wrapAngle(at.yaw - goal.yaw)) <= tol.yaw + 1e-9;
 }
 }  // namespace
 
@@ -115,7 +166,15 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
         if (!work.isValid(at))
             return finish(NavigationResult::Outcome::Stuck, "the vehicle's pose " + std::to_string(at.x) + ", " +
                                                                 std::to_string(at.y) + " collides in the working map: no plan from it");
-        const QueryResult q = runQuery(m.setup, m.planner, at, goal, m.options.planTimeLimit, freeGoalHeading);
+        // the tolerance shared between the plan and the follower, so that a plan to its edge
+        // followed within the follower's part stops inside it: the follower stops within
+        // followTol of the path's end (its own tolerance, or the goal's where that is smaller)
+        // and half the heading tolerance; the plan ends within the rest
+        const GoalTolerance &tol = m.options.goalTolerance;
+        const double ownTol = m.options.follower.goalTolerance > 0 ? m.options.follower.goalTolerance : std::max(0.3, m.field->resolution());
+        const double followTol = tol.position > 0 ? std::min(tol.position, ownTol) : ownTol;
+        const GoalTolerance planTol{tol.position > 0 ? tol.position - followTol : 0.0, tol.yaw / 2};
+        const QueryResult q = runQuery(m.setup, m.planner, at, goal, m.options.planTimeLimit, freeGoalHeading, planTol);
         if (!res.plans.empty()) res.replanSeconds.push_back(pendingUpdate + q.seconds);
         pendingUpdate = 0.0;
         if (q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
@@ -130,6 +189,21 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
                               "the goal is blocked by an obstacle the map did not show" +
                                   std::string(res.hasNearestReachable ? "; the nearest pose reached is reported" : ""));
             }
+            // no plan from where the car stands (its nose in a corner the map did not show):
+            // back up along the track driven and plan again from roomier ground
+            if (!res.plans.empty() && res.retreats < m.options.maxStalls)
+            {
+                const std::vector<Pose2> back = retreatPath(res.trajectory, work, kRetreat * work.vehicle().length + 1.0);
+                if (back.size() >= 2)
+                {
+                    ++res.retreats;
+                    FollowerParams fp = m.options.follower;
+                    fp.startTime = t;
+                    m.drive(back, fp, scenario, res, t, at);
+                    m.sense(scenario, t, at.x, at.y, res);
+                    continue;
+                }
+            }
             return finish(NavigationResult::Outcome::NoPath, "the planner found no path from (" + std::to_string(at.x) + ", " +
                                                                  std::to_string(at.y) + "): " + q.status.asString() +
                                                                  (q.notExactBecause.empty() ? "" : " (" + q.notExactBecause + ")"));
@@ -142,6 +216,8 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
         double lastScan = t;
         FollowerParams fp = m.options.follower;
         fp.startTime = t;
+        fp.goalTolerance = followTol;
+        if (tol.yaw > 0 && !freeGoalHeading) fp.goalYawTolerance = tol.yaw / 2;
         fp.interrupt = [&](const VehicleState &s, double now) {
             if (now - lastScan < m.options.sensor.period - 1e-9) return false;
             lastScan = now;
@@ -151,17 +227,13 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
                 if (!work.isValid(path[i])) return true;
             return false;
         };
-        const DriveResult d = drivePath(path, *m.worldChecker, scenario, fp);
-        res.trajectory.insert(res.trajectory.end(), d.trajectory.begin(), d.trajectory.end());
-        t += d.drivingTime;
-        res.drivingTime = t;
-        res.distanceDriven += d.distanceDriven;
-        res.minClearance = std::min(res.minClearance, d.minClearance);
-        at = {d.finalState.x, d.finalState.y, d.finalState.yaw};
-        res.finalPose = at;
+        const DriveResult d = m.drive(path, fp, scenario, res, t, at);
         switch (d.outcome)
         {
-            case DriveResult::Outcome::Reached: return finish(NavigationResult::Outcome::Reached, d.reason);
+            case DriveResult::Outcome::Reached:
+                if (tol.exact() || arrived(at, goal, freeGoalHeading, tol, followTol))
+                    return finish(NavigationResult::Outcome::Reached, d.reason);
+                break;  // stopped short of the tolerance: plan again from here
             case DriveResult::Outcome::Collided: return finish(NavigationResult::Outcome::Collided, d.reason);
             case DriveResult::Outcome::Timeout: return finish(NavigationResult::Outcome::Timeout, d.reason);
             case DriveResult::Outcome::Stuck:

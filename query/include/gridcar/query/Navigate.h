@@ -21,10 +21,17 @@ struct NavigationOptions
     PlannerConfig planner{"corner-astar", {}, false, false};  ///< the planner and its settings
     SetupOptions setup;             ///< the space it plans on
     double planTimeLimit{5.0};      ///< s per plan
+    /// How near the goal counts as arrived (default exact: the path ends at the goal, the
+    /// follower within max(0.3 m, a cell) of it). Otherwise the tolerance is shared: the
+    /// follower stops within f = min(tolerance.position, max(0.3 m, a cell)) of the path's end
+    /// and within tolerance.yaw / 2 of its heading, each plan ends within tolerance.position - f
+    /// and tolerance.yaw / 2 of the goal; a run that stops outside the tolerance (or further
+    /// than f) plans again from there.
+    GoalTolerance goalTolerance;
     RangeSensorParams sensor;
     FollowerParams follower;        ///< its startTime and interrupt are the navigator's
     int maxReplans{30};             ///< replans before the run ends as Stuck
-    int maxStalls{3};               ///< drives ending stuck (each followed by a replan) before it ends as Stuck
+    int maxStalls{3};               ///< drives ending stuck (each followed by a replan) before it ends as Stuck; retreats as many
 };
 
 /// How a navigation ended and what it measured.
@@ -37,6 +44,9 @@ struct NavigationResult
     double minClearance{std::numeric_limits<double>::infinity()};  ///< m, of the body in the true world
     int replans{0};                          ///< plans after the first
     int stalls{0};                           ///< drives that ended stuck
+    /// Times no plan started from where the vehicle stood and it backed up along its track
+    /// (two vehicle lengths and a metre, as far as the working map is free) to plan again
+    int retreats{0};
     std::vector<double> replanSeconds;       ///< wall time of each replan: the map updates since the last plan + solve()
     std::vector<double> updateSeconds;       ///< wall time of each working-map update (distance field + checker)
     std::vector<std::vector<Pose2>> plans;   ///< every path planned, in order
@@ -65,7 +75,10 @@ struct NavigationResult
  * waits for a pedestrian to cross. A plan that fails where the goal's pose collides in the
  * working map, or where the sensor added cells within 1.5 m of the body's reach round the goal
  * (an obstacle over the goal, seen from its sides), ends the run as GoalBlocked with the pose
- * nearest the goal the planner reached; any other failed plan as NoPath.
+ * nearest the goal the planner reached. Any other failed replan first backs the vehicle up along
+ * the track it drove (as far as the working map is free, two vehicle lengths and a metre: its
+ * nose may stand in a corner of what the map did not show) and plans again, up to maxStalls
+ * times; then the run ends as NoPath.
  */
 class Navigator
 {
