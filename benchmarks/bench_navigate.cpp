@@ -160,7 +160,7 @@ void run(const Options &o, const Area &a)
             Tally &t = tally[ped];
             ++t.runs;
             const double worst = worstClearance(r, nav.worldChecker(), sc);
-            if (worst <= 0.0) ++t.touched;
+            if (worst <= 0.0 && r.outcome != NavigationResult::Outcome::Collided) ++t.touched;  // counted once
             switch (r.outcome)
             {
                 case NavigationResult::Outcome::Reached: ++t.reached; break;

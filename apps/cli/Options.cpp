@@ -74,7 +74,8 @@ void addQueryOptions(CLI::App *cmd, QueryArgs &q, bool plannerRequired)
     cmd->add_option("--goal-tolerance", q.goalTolerance,
                     "XY[,YAW]: the path may end within XY m of the goal and, with a goal yaw, within YAW of its heading "
                     "(degrees, or with its unit: 0.25rad), as Nav2's goal checker (xy_goal_tolerance 0.25, "
-                    "yaw_goal_tolerance 0.25 rad); drive and navigate stop within it. Default: exact");
+                    "yaw_goal_tolerance 0.25 rad); drive's follower stops within XY of the path's end, navigate within "
+                    "the tolerance of the goal (the plan and the follower each take a part). Default: exact");
     cmd->add_option("--row-order", q.rowOrder,
                     "Which row --start-cell / --goal-cell count from: top (row 0 = the image's first row) or bottom "
                     "(row 0 = the map origin's row, as ROS's OccupancyGrid data and map_server count)")

@@ -61,6 +61,9 @@ struct Navigator::Impl
         return true;
     }
 
+    /// Backs the vehicle up along the track driven (retreatPath()); false when there is no room.
+    bool retreat(const Scenario &sc, NavigationResult &res, double &t, Pose2 &at);
+
     /// Drives @p path in the true world from time @p t on; the trajectory, time, distance and
     /// clearance added to @p res, @p t and @p at moved to where the car stopped.
     DriveResult drive(const std::vector<Pose2> &path, const FollowerParams &fp, const Scenario &sc, NavigationResult &res,
@@ -132,6 +135,19 @@ bool arrived(const Pose2 &at, const Pose2 &goal, bool freeHeading, const GoalTol
 }
 }  // namespace
 
+bool Navigator::Impl::retreat(const Scenario &sc, NavigationResult &res, double &t, Pose2 &at)
+{
+    const FootprintChecker &work = *setup.checker;
+    const std::vector<Pose2> back = retreatPath(res.trajectory, work, kRetreat * work.vehicle().length + 1.0);
+    if (back.size() < 2) return false;
+    ++res.retreats;
+    FollowerParams fp = options.follower;
+    fp.startTime = t;
+    drive(back, fp, sc, res, t, at);
+    sense(sc, t, at.x, at.y, res);
+    return true;
+}
+
 Navigator::Navigator(std::shared_ptr<const OccupancyGrid> map, const VehicleParams &vehicle, const NavigationOptions &options,
                      std::shared_ptr<const OccupancyGrid> world)
 {
@@ -191,19 +207,7 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
             }
             // no plan from where the car stands (its nose in a corner the map did not show):
             // back up along the track driven and plan again from roomier ground
-            if (!res.plans.empty() && res.retreats < m.options.maxStalls)
-            {
-                const std::vector<Pose2> back = retreatPath(res.trajectory, work, kRetreat * work.vehicle().length + 1.0);
-                if (back.size() >= 2)
-                {
-                    ++res.retreats;
-                    FollowerParams fp = m.options.follower;
-                    fp.startTime = t;
-                    m.drive(back, fp, scenario, res, t, at);
-                    m.sense(scenario, t, at.x, at.y, res);
-                    continue;
-                }
-            }
+            if (!res.plans.empty() && res.retreats < m.options.maxStalls && m.retreat(scenario, res, t, at)) continue;
             return finish(NavigationResult::Outcome::NoPath, "the planner found no path from (" + std::to_string(at.x) + ", " +
                                                                  std::to_string(at.y) + "): " + q.status.asString() +
                                                                  (q.notExactBecause.empty() ? "" : " (" + q.notExactBecause + ")"));

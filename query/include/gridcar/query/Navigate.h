@@ -78,7 +78,8 @@ struct NavigationResult
  * nearest the goal the planner reached. Any other failed replan first backs the vehicle up along
  * the track it drove (as far as the working map is free, two vehicle lengths and a metre: its
  * nose may stand in a corner of what the map did not show) and plans again, up to maxStalls
- * times; then the run ends as NoPath.
+ * times; then the run ends as NoPath. (Backing up after a stuck drive too was measured on
+ * bench_navigate and gained nothing: it is not done.)
  */
 class Navigator
 {
