@@ -113,6 +113,11 @@ Scenario loadScenarioOnMap(const std::string &file, const OccupancyGrid &g);
 void writeTrajectoryCsv(const std::string &file, const std::vector<TrajectorySample> &trajectory);
 /// "(x, y, yaw deg)".
 std::string describe(const Pose2 &p);
+/// Writes @p text (one JSON object) and a newline to stdout and notes it: with --json, main()
+/// prints an error as a JSON object of its own only when the command has printed none.
+void printJson(const std::string &text);
+/// True once printJson() has run.
+bool jsonPrinted();
 /// Creates a folder (and its parents); InputError saying why not.
 void ensureDir(const std::string &dir);
 

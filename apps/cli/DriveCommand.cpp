@@ -151,7 +151,7 @@ int runDrive(const DriveOptions &o)
     if (!pathToDrive(o, query, path, j))
     {
         j["outcome"] = "no plan";
-        if (o.json) std::cout << j.dump() << "\n";
+        if (o.json) printJson(j.dump());
         return 3;
     }
     FollowerParams fp;
@@ -165,7 +165,7 @@ int runDrive(const DriveOptions &o)
     const nlohmann::json dj = driveJson(r);  // (items() of a temporary would dangle)
     for (const auto &kv : dj.items()) j[kv.key()] = kv.value();
     if (o.json)
-        std::cout << j.dump() << "\n";
+        printJson(j.dump());
     else
         std::printf("%s: %s in %.2f s of driving (%.1f m path, %.1f m driven), cross-track mean %.2f m / max %.2f m, "
                     "min clearance %.2f m, %d recoveries\n",

@@ -102,7 +102,7 @@ int runInfo(const InfoOptions &o)
         if (grid.hasCosts()) j["cost_cells"] = costCells;
         j["max_clearance"] = field ? nlohmann::json(field->maxDistance()) : nlohmann::json(nullptr);
         j["memory_mb"] = memory;
-        std::cout << j.dump() << "\n";
+        printJson(j.dump());
         return 0;
     }
     std::printf("map        %s\n", o.map.c_str());

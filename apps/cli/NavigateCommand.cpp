@@ -129,7 +129,7 @@ int runNavigate(const NavigateOptions &o)
                          {"final_pose", {{"x", r.finalPose.x}, {"y", r.finalPose.y}, {"yaw_rad", r.finalPose.yaw}}}};
         if (r.hasNearestReachable)
             j["nearest_reachable"] = {{"x", r.nearestReachable.x}, {"y", r.nearestReachable.y}, {"yaw_rad", r.nearestReachable.yaw}};
-        std::cout << j.dump() << "\n";
+        printJson(j.dump());
     }
     else
     {

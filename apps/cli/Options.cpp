@@ -1,6 +1,8 @@
 // Option groups and parsing helpers shared by the gridcar commands.
 #include "Cli.h"
 
+#include <iostream>
+
 #include "gridcar/bench/Format.h"
 #include "gridcar/bench/ParamsFile.h"
 #include "gridcar/map/CampusGenerator.h"
@@ -291,5 +293,18 @@ void ensureDir(const std::string &dir)
     std::filesystem::create_directories(dir, ec);
     if (ec) throw InputError("cannot create output folder '" + dir + "': " + ec.message());
 }
+
+namespace
+{
+bool gJsonPrinted = false;
+}
+
+void printJson(const std::string &text)
+{
+    std::cout << text << "\n" << std::flush;
+    gJsonPrinted = true;
+}
+
+bool jsonPrinted() { return gJsonPrinted; }
 
 }  // namespace gridcar::cli

@@ -155,9 +155,8 @@ int runPlan(const PlanOptions &o)
         const bool bad = dynamic_cast<const InputError *>(&e) || dynamic_cast<const MapLoadError *>(&e) ||
                          dynamic_cast<const std::invalid_argument *>(&e) || dynamic_cast<const ompl::Exception *>(&e);
         if (o.json && !printed)
-            std::cout << nlohmann::json{{"planner", o.query.planner}, {"status", bad ? "Invalid input" : "Internal error"}, {"error", e.what()}}
-                             .dump()
-                      << "\n";
+            printJson(nlohmann::json{{"planner", o.query.planner}, {"status", bad ? "Invalid input" : "Internal error"}, {"error", e.what()}}
+                          .dump());
         throw;
     }
 }
@@ -173,7 +172,7 @@ int planAndReport(const PlanOptions &o, bool &printed)
         if (why.empty()) continue;
         const std::string msg = what + " " + describe(pose) + " is " + why;
         if (o.json)
-            std::cout << nlohmann::json{{"planner", o.query.planner}, {"status", "Invalid " + what}, {"error", msg}}.dump() << "\n";
+            printJson(nlohmann::json{{"planner", o.query.planner}, {"status", "Invalid " + what}, {"error", msg}}.dump());
         printed = o.json;
         throw InputError(msg);
     }
@@ -183,7 +182,7 @@ int planAndReport(const PlanOptions &o, bool &printed)
     {
         nlohmann::json j = resultJson(q, query);
         j["planner"] = o.query.planner;
-        std::cout << j.dump() << "\n";
+        printJson(j.dump());
         printed = true;
     }
     else

@@ -23,6 +23,16 @@ struct PlannersOptions
     bool json{false};
 };
 
+/// The kind of value a parameter takes, from OMPL's range suggestion of it: "flag" (0,1),
+/// "choice" (words), "number" or "whole number" (LOW:STEP:HIGH or LOW:HIGH), "text".
+std::string valueType(const std::string &range)
+{
+    if (range == "0,1") return "flag";
+    if (range.find(':') != std::string::npos) return range.find('.') == std::string::npos ? "whole number" : "number";
+    if (range.find(',') != std::string::npos) return "choice";
+    return "text";
+}
+
 int runPlanners(const PlannersOptions &o)
 {
     // (reading some of OMPL's parameters warns that they no longer act: the list says what they are)
@@ -53,14 +63,16 @@ int runPlanners(const PlannersOptions &o)
         {
             const std::string range = p->params().getParam(param)->getRangeSuggestion();
             const std::string help = parameterHelp(param);
-            list.push_back({{"name", param}, {"default", value}, {"accepts", range}, {"help", help}});
+            const std::string type = valueType(range);
+            list.push_back({{"name", param}, {"default", value}, {"type", type}, {"sweep_range", range}, {"help", help}});
             if (!o.json)
-                std::printf("  %-26s default %-10s %s%s%s\n", param.c_str(), value.empty() ? "(unset)" : value.c_str(), help.c_str(),
-                            range.empty() ? "" : "; range ", range.c_str());
+                std::printf("  %-26s default %-10s %-12s %s%s%s\n", param.c_str(), value.empty() ? "(unset)" : value.c_str(),
+                            type.c_str(), help.c_str(), range.empty() ? "" : type == "choice" ? "; one of " : "; Benchmark sweeps ",
+                            range.c_str());
         }
         all[name] = list;
     }
-    if (o.json) std::cout << all.dump() << "\n";
+    if (o.json) printJson(all.dump());
     return 0;
 }
 }  // namespace
@@ -68,12 +80,13 @@ int runPlanners(const PlannersOptions &o)
 Command addPlannersCommand(CLI::App &app)
 {
     auto o = std::make_shared<PlannersOptions>();
-    auto *c = app.add_subcommand("planners", "List every planner and every parameter it declares: default, range, what it does");
+    auto *c = app.add_subcommand("planners", "List every planner and every parameter it declares: default, type, what it does (with its unit) and the range OMPL's Benchmark would sweep");
     c->add_option("--planner", o->planner, "Only this planner");
-    c->add_flag("--json", o->json, "Print one JSON object: {planner: [{name, default, accepts, help}, ...]}");
+    c->add_flag("--json", o->json, "Print one JSON object: {planner: [{name, default, type (flag, choice, number, whole number, text), sweep_range, help}, ...]}");
     c->footer("Set a parameter with plan --param NAME=VALUE (or params: in --params-file); an OMPL application "
-              "sets it with planner->params().setParam(NAME, VALUE). Ranges are OMPL's range suggestions: "
-              "LOW:STEP:HIGH for numbers, the words a switch or a choice takes.");
+              "sets it with planner->params().setParam(NAME, VALUE). The sweep ranges are OMPL's range suggestions "
+              "(LOW:STEP:HIGH for numbers, the words a switch or a choice takes): what a benchmark would try, not "
+              "limits; a value the planner refuses is an error (exit 2) that says what it takes.");
     return {c, [o] { return runPlanners(*o); }};
 }
 

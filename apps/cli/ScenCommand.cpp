@@ -48,7 +48,7 @@ int runScen(const ScenOptions &o)
         j["queries_per_s"] = seconds > 0 ? st.queries / seconds : 0.0;
         j["expanded"] = st.expanded;
         j["expansions_per_s"] = seconds > 0 ? st.expanded / seconds : 0.0;
-        std::cout << j.dump() << "\n";
+        printJson(j.dump());
     }
     else
         std::printf("%s with %s: %zu / %zu paths match the published optimal length (%zu solved); %.3f ms per query, "

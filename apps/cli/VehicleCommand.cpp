@@ -62,7 +62,7 @@ int runVehicle(const VehicleOptions &o)
         j["corner_speeds"] = {vc.v45, vc.v90, vc.v135};
         j["physics_weights"] = {physics.w45, physics.w90, physics.w135};
         j["paper_weights"] = {paper.w45, paper.w90, paper.w135};
-        std::cout << j.dump(2) << "\n";
+        printJson(j.dump(2));
         return 0;
     }
     std::printf("vehicle %s\n", v.name.c_str());

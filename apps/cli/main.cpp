@@ -4,7 +4,9 @@
 
 #include "gridcar/version.h"
 
+#include <nlohmann/json.hpp>
 #include <ompl/config.h>
+#include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace
 {
@@ -23,37 +26,76 @@ std::string versionText()
            std::to_string(OMPL_MINOR_VERSION) + "." + std::to_string(OMPL_PATCH_VERSION) + ")";
 }
 
-/// Runs @p run and turns every error into one stderr line and an exit status.
-int guarded(const std::function<int()> &run)
+/// OMPL's log on stderr as OMPL prints it ("Warning: ..."), without the source file and line
+/// it adds (a user reads the message, not where in OMPL's or gridcar's sources it was raised).
+struct CliLog : ompl::msg::OutputHandler
+{
+    void log(const std::string &text, ompl::msg::LogLevel level, const char *, int) override
+    {
+        const char *tag = level >= ompl::msg::LOG_ERROR  ? "Error: "
+                          : level >= ompl::msg::LOG_WARN ? "Warning: "
+                          : level >= ompl::msg::LOG_INFO ? "Info: "
+                                                         : "Debug: ";
+        std::fprintf(stderr, "%s%s\n", tag, text.c_str());
+    }
+};
+
+/// True if --json is among the arguments: errors are then a JSON object on stdout as well.
+bool jsonAsked(int argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i)
+        if (std::string_view(argv[i]) == "--json") return true;
+    return false;
+}
+
+/// With @p json: {"status": "Invalid input" | "Internal error", "error": message} on stdout,
+/// unless the command printed its JSON object already.
+void errorJson(bool json, bool bad, const std::string &message)
+{
+    if (json && !gridcar::cli::jsonPrinted())
+        gridcar::cli::printJson(nlohmann::json{{"status", bad ? "Invalid input" : "Internal error"}, {"error", message}}.dump());
+}
+
+/// Runs @p run and turns every error into one stderr line and an exit status (2 for a bad
+/// input, 1 for an internal error), and with @p json into one JSON object on stdout too.
+int guarded(const std::function<int()> &run, bool json)
 {
     try
     {
         return run();
     }
-    catch (const gridcar::MapLoadError &e)  // a bad file
+    // a bad file, a bad argument or value, a bad name, size or number given to the library,
+    // a problem OMPL refused
+    catch (const gridcar::MapLoadError &e)
     {
         std::fprintf(stderr, "gridcar: error: %s\n", e.what());
+        errorJson(json, true, e.what());
     }
-    catch (const gridcar::InputError &e)  // a bad argument or value
+    catch (const gridcar::InputError &e)
     {
         std::fprintf(stderr, "gridcar: error: %s\n", e.what());
+        errorJson(json, true, e.what());
     }
-    catch (const std::invalid_argument &e)  // a bad name, size or number given to the library
+    catch (const std::invalid_argument &e)
     {
         std::fprintf(stderr, "gridcar: error: %s\n", e.what());
+        errorJson(json, true, e.what());
     }
-    catch (const ompl::Exception &e)  // OMPL refused the problem
+    catch (const ompl::Exception &e)
     {
         std::fprintf(stderr, "gridcar: error: %s\n", e.what());
+        errorJson(json, true, e.what());
     }
     catch (const std::bad_alloc &)
     {
         std::fprintf(stderr, "gridcar: internal error: out of memory\n");
+        errorJson(json, false, "out of memory");
         return 1;
     }
     catch (const std::exception &e)
     {
         std::fprintf(stderr, "gridcar: internal error: %s\n", e.what());
+        errorJson(json, false, e.what());
         return 1;
     }
     return 2;
@@ -63,6 +105,8 @@ int guarded(const std::function<int()> &run)
 int main(int argc, char **argv)
 {
     using namespace gridcar::cli;
+    static CliLog log;  // (OMPL keeps a pointer to it: it lives as long as the process)
+    ompl::msg::useOutputHandler(&log);
     CLI::App app{"gridcar: vehicle-aware grid planners for OMPL (grid A* baselines, corner-weighted A*, improved A*) "
                  "and a benchmark harness against OMPL's sampling planners.\n"
                  "Maps: ROS map_server .yaml (+ PGM/PNG), Moving AI .map, plain .ppm/.pgm/.png (dark = occupied)."};
@@ -91,9 +135,10 @@ int main(int argc, char **argv)
     catch (const CLI::ParseError &e)
     {
         app.exit(e);
+        errorJson(jsonAsked(argc, argv), true, e.what());
         return 2;
     }
     for (const Command &c : commands)
-        if (*c.app) return guarded(c.run);
+        if (*c.app) return guarded(c.run, jsonAsked(argc, argv));
     return 1;
 }

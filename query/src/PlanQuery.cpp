@@ -4,6 +4,7 @@
 
 #include "gridcar/core/Errors.h"
 #include "gridcar/planners/PlannerReport.h"
+#include "gridcar/planners/Settings.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/planners/SmoothedPlanner.h"
 #include "gridcar/spaces/CurveSpaces.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <mutex>
 
@@ -26,7 +28,7 @@ PlannerParams parsePlannerParams(const std::vector<std::string> &settings)
     for (const auto &kv : settings)
     {
         const auto eq = kv.find('=');
-        if (eq == std::string::npos || eq == 0) throw InputError("--param '" + kv + "': expected NAME=VALUE");
+        if (eq == std::string::npos || eq == 0) throw InputError("--param '" + kv + "': expected NAME=VALUE (`gridcar planners --planner NAME` lists a planner's parameters with their defaults and what they take)");
         out.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
     }
     return out;
@@ -54,7 +56,36 @@ struct ParamWarnings : ompl::msg::OutputHandler
 ParamWarnings paramWarnings;
 std::mutex paramWarningsLock;
 
-void applyParam(ompl::base::Planner &planner, const std::string &name, const std::string &value)
+/// OMPL's own planners take whatever their setters are given (a goal bias of 7, a negative
+/// rewire factor, "maybe" for a flag): a value is checked first against the kind of its range
+/// suggestion: a flag (0,1) is 0, 1, true or false; a number (lo:step:hi or lo:hi) is one, whole
+/// where the range is, not negative where the range is not, and at most hi where hi <= 1 (a
+/// probability or a fraction).
+void checkOmplValue(const ompl::base::Planner &planner, const std::string &name, const std::string &value)
+{
+    const std::string range = planner.params().getParam(name)->getRangeSuggestion();
+    const std::string refused = "planner " + planner.getName() + ": parameter " + name + "=" + value + " not accepted: ";
+    if (range == "0,1")
+    {
+        for (const char *ok : {"0", "1", "true", "false"})
+            if (value == ok) return;
+        throw InputError(refused + "a flag takes 0, 1, true or false");
+    }
+    const std::size_t c1 = range.find(':'), c2 = range.rfind(':');
+    if (c1 == std::string::npos) return;  // (lo:hi or lo:step:hi)
+    const double lo = std::strtod(range.substr(0, c1).c_str(), nullptr), hi = std::strtod(range.substr(c2 + 1).c_str(), nullptr);
+    const bool whole = range.find('.') == std::string::npos;
+    char *end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (value.empty() || *end != '\0' || !std::isfinite(v) || (whole && v != std::floor(v)))
+        throw InputError(refused + (whole ? "not a whole number" : "not a number") + " (its range: " + range + ")");
+    // (a suggestion's lower end is not a limit: a count or a factor below it still works)
+    if ((lo >= 0 && v < 0) || (lo >= 0 && hi <= 1.0 && v > hi))
+        throw InputError(refused + (hi <= 1.0 ? "outside [0, " + settings::print(hi) + "]" : "negative") +
+                         " (its range: " + range + ")");
+}
+
+void applyParam(ompl::base::Planner &planner, const std::string &name, const std::string &value, bool omplPlanner)
 {
     if (!planner.params().hasParam(name))
     {
@@ -64,6 +95,7 @@ void applyParam(ompl::base::Planner &planner, const std::string &name, const std
         for (const auto &n : names) list += (list.empty() ? "" : ", ") + n;
         throw InputError("planner " + planner.getName() + " has no parameter '" + name + "' (its parameters: " + list + ")");
     }
+    if (omplPlanner) checkOmplValue(planner, name, value);
     // the setters throw std::invalid_argument, which OMPL's setParam() turns into false after
     // logging the reason as a warning: the warning is caught here and becomes the message
     bool accepted = false;
@@ -114,7 +146,9 @@ ompl::base::PlannerPtr configurePlanner(const ompl::base::SpaceInformationPtr &s
     ompl::base::PlannerPtr planner = makePlanner(si, name);
     if (config.freeStartHeading && planner->params().hasParam("free_start_heading"))
         planner->params().setParam("free_start_heading", "1");
-    for (const auto &kv : params) applyParam(*planner, kv.first, kv.second);
+    const std::vector<std::string> ompls = omplPlannerNames();
+    const bool omplPlanner = std::find(ompls.begin(), ompls.end(), name) != ompls.end();
+    for (const auto &kv : params) applyParam(*planner, kv.first, kv.second, omplPlanner);
     if (config.smooth && !reportOf(*planner).smoothsItself) planner = std::make_shared<SmoothedPlanner>(planner);
     return planner;
 }
@@ -227,9 +261,11 @@ std::string whyPoseInvalid(const FootprintChecker &fc, const OccupancyGrid &g, c
                 occupied += g.at(k, r) == CellState::Occupied;
             }
         if (g.at(c.col, c.row) == CellState::Unknown)
-            why += " (the map's cell there is unknown, which counts as blocked: --unknown-free counts unknown cells as free)";
+            why += " (the map's cell there is unknown, which counts as blocked unless the map is read with unknown cells "
+                   "free: gridcar's --unknown-free; unknown_free=True of Map.load() or Map.from_array() in Python)";
         else if (unknown > 0 && occupied == 0)
-            why += " (only unknown cells are near it, which count as blocked: --unknown-free counts unknown cells as free)";
+            why += " (only unknown cells are near it, which count as blocked unless the map is read with unknown cells "
+                   "free: gridcar's --unknown-free; unknown_free=True of Map.load() or Map.from_array() in Python)";
     }
     return why;
 }
