@@ -95,8 +95,9 @@ def plot(map, plan=None, drive=None, vehicle=None, ax=None, margin=5.0, title=No
         dmax = max(float(d.max()), 1e-9)
         grey = np.where(cells == 0, 0.55 + 0.45 * np.minimum(d / dmax, 1.0), grey)
     ax.imshow(grey, cmap="gray", vmin=0, vmax=1, origin="lower", extent=extent, interpolation="nearest")
-    handles = [Line2D([], [], color="black", lw=6, label="occupied"),
-               Line2D([], [], color="0.75", lw=6, label="unknown")]
+    handles = [Line2D([], [], color="black", lw=6, label="occupied")]
+    if (cells < 0).any():  # (as the program's pictures: only where the map has unknown cells)
+        handles.append(Line2D([], [], color="0.75", lw=6, label="unknown"))
     costs = map.costs()
     if costs is not None:
         cst = costs[r0:r1, c0:c1].astype(float)
@@ -106,11 +107,18 @@ def plot(map, plan=None, drive=None, vehicle=None, ax=None, margin=5.0, title=No
 
     outline = veh.outline if len(veh.outline) else None
     spacing = max(3.0 * veh.length, (x1 - x0 + y1 - y0) / 30.0)
+    raw = np.asarray(plan.raw_path, dtype=float) if plan is not None and hasattr(plan, "raw_path") else None
+    if raw is not None and len(raw) and (raw.shape != path.shape or not np.allclose(raw, path)):
+        ax.plot(raw[:, 0], raw[:, 1], color="tab:orange", lw=1.0, ls="--", label="path before smoothing")
     if path is not None and len(path):
         _draw_path(ax, path, PATH_COLOUR, "planned path", outline, spacing)
     if traj is not None and len(traj) > 1:
         drv = traj[:, 1:4]
         ax.plot(drv[:, 0], drv[:, 1], color=DRIVE_COLOUR, lw=1.0, label="driven (simulation)")
+        back = traj[:, 4] < 0  # speed column: negative in reverse
+        if back.any():
+            ax.plot(np.where(back, drv[:, 0], np.nan), np.where(back, drv[:, 1], np.nan), color=REVERSE_COLOUR, lw=1.5,
+                    label="driven in reverse")
         if outline is not None:
             _outline(ax, drv[-1], outline, DRIVE_COLOUR)
         ax.plot(drv[-1, 0], drv[-1, 1], "X", color=DRIVE_COLOUR, ms=8, label="end of the drive (%s)" % drive.outcome)

@@ -147,6 +147,28 @@ def test_errors_are_python_exceptions_with_the_messages():
     assert issubclass(gridcar.InputError, ValueError) and issubclass(gridcar.MapLoadError, ValueError)
 
 
+def test_a_pose_on_unknown_cells_names_the_python_switch():
+    grid = np.zeros((20, 40), np.int8)
+    grid[:, :10] = -1  # unknown (ROS's OccupancyGrid value)
+    m = gridcar.Map.from_array(grid, resolution=0.5)
+    with pytest.raises(gridcar.InputError, match=r"unknown.*unknown_free=True of Map.load\(\) or Map.from_array\(\)"):
+        gridcar.plan(m, (2, 5), (15, 5), vehicle="paper-c-robot")
+    free = gridcar.Map.from_array(grid, resolution=0.5, unknown_free=True)
+    assert gridcar.plan(free, (2, 5), (15, 5), vehicle="paper-c-robot").exact
+
+
+def test_every_public_name_has_a_docstring():
+    missing = []
+    for cname in ["Map", "Vehicle", "Scene", "PlanResult", "DriveResult"]:
+        for name, member in vars(getattr(gridcar, cname)).items():
+            if not name.startswith("_") and not (getattr(member, "__doc__", None) or "").strip():
+                missing.append("%s.%s" % (cname, name))
+    for name in ["plan", "drive", "plot", "planners", "vehicle_presets"]:
+        if not (getattr(gridcar, name).__doc__ or "").strip():
+            missing.append(name)
+    assert not missing, "no docstring: " + ", ".join(missing)
+
+
 def test_vehicle_from_dict_and_settings_of_every_kind():
     veh = gridcar.Vehicle.from_dict({"preset": "paper-i", "scale": 0.5})
     base = gridcar.Vehicle("paper-i")
@@ -228,9 +250,15 @@ def test_plot_draws_axes_in_metres_and_a_legend(tmp_path):
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     assert "planned path" in labels and "start" in labels and "goal" in labels and "driven (simulation)" in labels
     assert ax.get_xlabel() == "x (m)" and ax.get_ylabel() == "y (m)"
+    assert "unknown" not in labels  # the map has no unknown cell
     out = tmp_path / "plot.png"
     ax.figure.savefig(out)
     assert out.stat().st_size > 5000
+    # a smoothed grid path: the path before smoothing is drawn too, as the program's pictures do
+    g = scene.plan((5, 5), (45, 20), planner="improved-astar-grid")
+    assert len(g.raw_path) and not np.array_equal(g.raw_path, g.path)
+    labels = [t.get_text() for t in gridcar.plot(m, plan=g).get_legend().get_texts()]
+    assert "path before smoothing" in labels
 
 
 @needs_shared
