@@ -35,6 +35,27 @@ const std::map<std::string, std::string> &singles()
         {"delay_collision_checking", "OMPL: check motions only when they could improve a solution"},
         {"max_nearest_neighbors", "OMPL: neighbours a new PRM vertex is joined to"},
         {"samples_per_batch", "OMPL: states sampled per batch (BIT*)"},
+        // RRT*'s and Informed RRT*'s
+        {"focus_search", "OMPL: tree_pruning and informed_sampling together (only where a better solution can be)"},
+        {"informed_sampling", "OMPL: once a solution exists, sample only the states that could improve it (the informed set)"},
+        {"new_state_rejection", "OMPL: refuse a new state whose cost to come plus cost to go cannot improve the solution"},
+        {"number_sampling_attempts", "OMPL: attempts at drawing a useful sample before an iteration gives up"},
+        {"ordered_sampling", "OMPL: draw samples in batches and use them in the order of their heuristic cost"},
+        {"ordering_batch_size", "OMPL: samples per batch with ordered_sampling"},
+        {"prune_threshold", "OMPL: fraction by which the solution cost must improve before the tree is pruned again"},
+        {"pruned_measure", "OMPL: the rewiring radius from the measure of the space left after pruning, not the whole"},
+        {"sample_rejection", "OMPL: reject samples whose heuristic cost cannot improve the solution"},
+        {"tree_pruning", "OMPL: remove the tree's vertices that cannot improve the solution, once there is one"},
+        {"use_admissible_heuristic", "OMPL: pruning and rejection use an admissible cost-to-go bound (else an estimate)"},
+        // BIT*'s
+        {"delay_rewiring_to_first_solution", "OMPL: BIT* does not rewire its graph before it has a solution"},
+        {"drop_unconnected_samples_on_prune", "OMPL: BIT* drops the samples not in its graph when it prunes"},
+        {"find_approximate_solutions", "OMPL: BIT* keeps the vertex nearest the goal and returns it when no path is found"},
+        {"prune_threshold_as_fractional_cost_change", "OMPL: fraction by which the solution cost must improve before BIT* prunes again"},
+        {"stop_on_each_solution_improvement", "OMPL: BIT*'s solve() returns each time the solution improves"},
+        {"use_graph_pruning", "OMPL: BIT* removes the vertices and samples that cannot improve the solution"},
+        {"use_just_in_time_sampling", "OMPL: BIT* samples only as far out as the current solution cost needs"},
+        {"use_strict_queue_ordering", "OMPL: BIT* re-sorts its queue whenever a cost changes (else once per batch)"},
     };
     return m;
 }
