@@ -201,6 +201,27 @@ def test_drive_reaches_the_goal():
         scene.drive(np.array([[25.2, 25.0, 0.0], [30.0, 25.0, 0.0]]))
 
 
+def test_threads_drive_side_by_side_with_the_same_answers():
+    """Drives in four threads (a scene each, the GIL released while they run) give the one
+    thread's trajectory, sample for sample."""
+    m = gridcar.Map.from_array(walled(), resolution=0.5)
+    path = gridcar.Scene(m, vehicle="paper-i").plan((5, 5, 0), (45, 20, math.pi / 2)).path
+    alone = gridcar.Scene(m, vehicle="paper-i").drive(path)
+    assert alone.reached, alone.reason
+    outs = [None] * 4
+
+    def work(k):
+        outs[k] = gridcar.Scene(m, vehicle="paper-i").drive(path)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    for d in outs:
+        assert d.outcome == alone.outcome and np.array_equal(d.trajectory, alone.trajectory)
+
+
 def test_planning_releases_the_gil():
     """While one thread plans (RRT* uses its whole time limit), Python code runs in another."""
     m = gridcar.Map.from_array(walled(), resolution=0.5)
