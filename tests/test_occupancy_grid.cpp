@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -106,4 +107,25 @@ TEST(OccupancyGrid, CropKeepsWorldCoordinates)
     EXPECT_NEAR(c.cellCenterY(0), g.cellCenterY(3), 1e-12);
     EXPECT_EQ(g.cropped(18, 8, 10, 10).width(), 2);  // clipped
     EXPECT_THROW(g.cropped(30, 0, 5, 5), std::invalid_argument);
+}
+
+TEST(OccupancyGrid, SameFrameComparesSizeResolutionAndOrigin)
+{
+    OccupancyGrid a(20, 10, 0.05, CellState::Free);
+    a.setOrigin(-1.0, 2.0, 0.0);
+    OccupancyGrid b = a;
+    b.set(3, 4, CellState::Occupied);  // the cells may differ
+    EXPECT_TRUE(a.sameFrame(b));
+    OccupancyGrid wider(21, 10, 0.05, CellState::Free), finer(20, 10, 0.025, CellState::Free);
+    wider.setOrigin(-1.0, 2.0, 0.0);
+    finer.setOrigin(-1.0, 2.0, 0.0);
+    EXPECT_FALSE(a.sameFrame(wider));
+    EXPECT_FALSE(a.sameFrame(finer));
+    for (const auto &o : {std::array<double, 3>{-1.05, 2.0, 0.0}, std::array<double, 3>{-1.0, 2.05, 0.0},
+                          std::array<double, 3>{-1.0, 2.0, 0.1}})
+    {
+        OccupancyGrid moved = a;
+        moved.setOrigin(o[0], o[1], o[2]);
+        EXPECT_FALSE(a.sameFrame(moved)) << o[0] << ", " << o[1] << ", " << o[2];
+    }
 }

@@ -94,9 +94,7 @@ int runNavigate(const NavigateOptions &o)
     {
         world = std::make_shared<OccupancyGrid>(loadMapArgument(o.world));
         world->setUnknownIsFree(qa.unknownFree);
-        if (world->width() != query.grid->width() || world->height() != query.grid->height() ||
-            world->resolution() != query.grid->resolution() || world->originX() != query.grid->originX() ||
-            world->originY() != query.grid->originY())
+        if (!world->sameFrame(*query.grid))
             throw InputError("--world " + o.world + ": " + std::to_string(world->width()) + " x " + std::to_string(world->height()) +
                              " cells, the map " + std::to_string(query.grid->width()) + " x " + std::to_string(query.grid->height()) +
                              ": the true world must have the map's size, resolution and origin");

@@ -38,9 +38,7 @@ struct Navigator::Impl
          std::shared_ptr<const OccupancyGrid> truth)
       : world(truth ? std::move(truth) : map), working(std::make_shared<OccupancyGrid>(*map)), options(o)
     {
-        if (world->width() != map->width() || world->height() != map->height() ||
-            world->resolution() != map->resolution() || world->originX() != map->originX() ||
-            world->originY() != map->originY())
+        if (!world->sameFrame(*map))
             throw std::invalid_argument("Navigator: the true map must have the map's size, resolution and origin");
         field = std::make_shared<DistanceField>(working.grid());
         field->prepareUpdates(working.grid());

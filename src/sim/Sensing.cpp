@@ -43,8 +43,7 @@ CellWindow WorkingMap::scan(const OccupancyGrid &truth, const Scenario &world, d
                             const RangeSensorParams &sensor)
 {
     OccupancyGrid &g = *grid_;
-    if (truth.width() != g.width() || truth.height() != g.height() || truth.resolution() != g.resolution() ||
-        truth.originX() != g.originX() || truth.originY() != g.originY())
+    if (!truth.sameFrame(g))
         throw std::invalid_argument("WorkingMap::scan: the true map must have the working map's size, resolution and origin");
     if (!(sensor.range > 0) || sensor.beams < 1 || !std::isfinite(sensor.range))
         throw std::invalid_argument("range sensor: range must be > 0 and beams >= 1");

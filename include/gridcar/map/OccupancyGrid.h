@@ -59,6 +59,13 @@ public:
     void setOrigin(double x, double y, double yaw = 0.0);
 
     bool inBounds(int col, int row) const { return col >= 0 && row >= 0 && col < width_ && row < height_; }
+    /// True if @p o has this grid's size, resolution and origin (position and yaw): a cell of
+    /// one is the same piece of the world as the same cell of the other.
+    bool sameFrame(const OccupancyGrid &o) const
+    {
+        return width_ == o.width_ && height_ == o.height_ && resolution() == o.resolution() && originX_ == o.originX_ &&
+               originY_ == o.originY_ && originYaw_ == o.originYaw_;
+    }
     std::size_t index(int col, int row) const { return std::size_t(row) * std::size_t(width_) + std::size_t(col); }
 
     CellState at(int col, int row) const { return cells_[index(col, row)]; }
