@@ -146,3 +146,38 @@ TEST(Navigator, AGoalToleranceIsHonouredByThePlansAndTheDrive)
     EXPECT_LE(std::abs(std::remainder(r2.finalPose.yaw - M_PI / 2, 2 * M_PI)), 20.0 * M_PI / 180.0 + 1e-6);
     EXPECT_LE(std::hypot(r2.finalPose.x - 20.0, r2.finalPose.y - 6.0), 0.5 + 1e-9);
 }
+
+// A forward-only planner whose car has driven into a 1 m channel (too narrow to turn in) that
+// an unmapped box closes: no plan starts where it stands, so it backs up along its own track
+// until one does, then drives round the channel's walls to the goal.
+TEST(Navigator, NoPlanFromWhereTheCarStandsBacksItUpAlongItsTrack)
+{
+    auto g = std::make_shared<OccupancyGrid>(*hall());
+    for (int c = 140; c < 180; ++c)  // walls at y 5.4-5.5 and 6.5-6.6 from x = 14 m to 18 m
+        g->set(c, 119 - 54, CellState::Occupied), g->set(c, 119 - 65, CellState::Occupied);
+    Scenario sc;
+    sc.obstacles.push_back(standingBox(17.6, 6.0, 0.6, 1.0));  // closes the channel's far end
+    NavigationOptions o;
+    o.planner.params = {{"reverse", "off"}};
+    o.sensor.range = 3.0;  // seen only from inside the channel
+    o.planTimeLimit = 2.0;
+    Navigator nav(g, VehicleParams::preset("paper-c-robot"), o);
+    const NavigationResult r = nav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, sc);
+    ASSERT_EQ(r.outcome, NavigationResult::Outcome::Reached)
+        << r.reason << " (" << r.retreats << " retreats, " << r.replans << " replans, " << r.plans.size() << " plans, "
+        << r.distanceDriven << " m driven)";
+    EXPECT_GE(r.retreats, 1);
+    EXPECT_GE(r.replans, 1);
+    EXPECT_GT(worstClearance(r, nav.worldChecker(), sc), 0.0);
+    // the first plan went through the channel, the last one round its walls
+    bool through = false, round = true;
+    for (const Pose2 &p : r.plans.front()) through = through || (p.x > 14.5 && p.x < 17.5 && std::abs(p.y - 6.0) < 0.5);
+    for (const Pose2 &p : r.plans.back()) round = round && !(p.x > 14.0 && p.x < 18.0 && std::abs(p.y - 6.0) < 0.5);
+    EXPECT_TRUE(through);
+    EXPECT_TRUE(round);
+    // it backed up: some stretch of the drive moved away from the goal along the channel
+    bool backed = false;
+    for (std::size_t i = 1; i < r.trajectory.size(); ++i)
+        backed = backed || (r.trajectory[i].v < 0 && r.trajectory[i].x < r.trajectory[i - 1].x && r.trajectory[i].x > 10.0);
+    EXPECT_TRUE(backed);
+}
