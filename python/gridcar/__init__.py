@@ -43,7 +43,7 @@ def _map(m, unknown_free=False):
 
 
 def plan(map, start, goal, planner="corner-astar", settings=None, vehicle=None, time_limit=10.0, space="se2",
-         smooth=False):
+         smooth=False, goal_tolerance=None):
     """Plans start -> goal on a map and measures the path.
 
     map: a gridcar.Map or a map file's path. start, goal: (x, y) or (x, y, yaw) in metres and
@@ -53,28 +53,33 @@ def plan(map, start, goal, planner="corner-astar", settings=None, vehicle=None, 
     parameters as a dict ({'reverse': 'on', 'clearance': 0.2}; `gridcar planners` lists them
     with their defaults). vehicle: a preset name (gridcar.vehicle_presets(), default 'paper-i'),
     a YAML file, a dict of vehicle fields or a gridcar.Vehicle. space: 'se2', 'dubins' or
-    'reeds-shepp'. smooth: paper I's post-processing for any planner.
+    'reeds-shepp'. smooth: paper I's post-processing for any planner. goal_tolerance: None
+    (exact), metres from the goal position, or (metres, radians) with the heading's tolerance
+    for a goal with a yaw (Nav2's goal checker: (0.25, 0.25)); the path then ends within it.
 
     Returns a gridcar.PlanResult: status, exact, path (N x 3 numpy array), length, time,
     drivable (the independent check) and more. Raises InputError for a start or goal off the
     map or in collision, an unknown planner or a bad setting. Builds a Scene for the query:
     to plan many queries on one map, make a gridcar.Scene once and call its plan().
     """
-    return Scene(_map(map), vehicle, space).plan(start, goal, planner, settings or {}, time_limit, smooth)
+    return Scene(_map(map), vehicle, space).plan(start, goal, planner, settings or {}, time_limit, smooth, goal_tolerance)
 
 
-def drive(map, path, vehicle=None, scenario=None, space="se2", dt=0.05, xi=1.0, eta=0.6, rho0=1.5, time_limit=0.0):
+def drive(map, path, vehicle=None, scenario=None, space="se2", dt=0.05, xi=1.0, eta=0.6, rho0=1.5, time_limit=0.0,
+          goal_tolerance=None):
     """Drives a path with paper C's potential-field follower in the kinematic bicycle simulation.
 
     path: a PlanResult or an N x 3 array (x, y, yaw). scenario: a YAML file of moving obstacles
     (as `gridcar drive --scenario`). dt: simulation step (s); xi, eta, rho0: the attractive
     gain, the repulsive gain and the obstacles' influence distance (m). time_limit: 0 = from
     the path's length. A path with cusps is driven piece by piece, each in its gear.
+    goal_tolerance: None (the follower's own: 0.3 m or a cell), metres from the path's end, or (metres,
+    radians) with a heading tolerance at the end.
 
     Returns a gridcar.DriveResult: outcome ('reached', 'collided', 'stuck', 'timeout'), reason,
     driving_time, trajectory (N x 6: t, x, y, yaw, v, steer) and more.
     """
-    return Scene(_map(map), vehicle, space).drive(path, scenario, dt, xi, eta, rho0, time_limit)
+    return Scene(_map(map), vehicle, space).drive(path, scenario, dt, xi, eta, rho0, time_limit, goal_tolerance)
 
 
 def plot(map, plan=None, drive=None, vehicle=None, ax=None, margin=5.0, title=None, distance=False):

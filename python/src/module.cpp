@@ -204,6 +204,32 @@ struct PlanResult
 
 /// A map, a vehicle and an OMPL set-up on them (distance field, FCL footprint checker, the
 /// space): made once, then any number of plans and drives. One query at a time per scene.
+/// goal_tolerance: None (exact), a position tolerance in metres, or (metres, radians).
+GoalTolerance toleranceOf(const py::object &o)
+{
+    GoalTolerance t;
+    if (o.is_none()) return t;
+    try
+    {
+        if (py::isinstance<py::sequence>(o))
+        {
+            const auto seq = o.cast<std::vector<double>>();
+            if (seq.size() != 2) throw InputError("");
+            t.position = seq[0];
+            t.yaw = seq[1];
+        }
+        else
+            t.position = o.cast<double>();
+    }
+    catch (const std::exception &)
+    {
+        throw InputError("goal_tolerance must be None, metres, or (metres, radians)");
+    }
+    if (!(t.position >= 0) || !(t.yaw >= 0) || !std::isfinite(t.position) || t.yaw > M_PI)
+        throw InputError("goal_tolerance must be finite and >= 0 (the yaw part at most pi)");
+    return t;
+}
+
 struct Scene
 {
     std::shared_ptr<Map> map;
@@ -236,8 +262,9 @@ struct Scene
     }
 
     PlanResult plan(const py::object &startObj, const py::object &goalObj, const std::string &plannerName,
-                    const py::dict &settings, double timeLimit, bool smooth)
+                    const py::dict &settings, double timeLimit, bool smooth, const py::object &toleranceObj)
     {
+        const GoalTolerance tolerance = toleranceOf(toleranceObj);
         if (!(timeLimit > 0) || !std::isfinite(timeLimit) || timeLimit > 86400)
             throw InputError("time_limit must be a positive number of seconds (at most a day)");
         bool startYaw = false, goalYaw = false;
@@ -261,7 +288,7 @@ struct Scene
         }
         const ompl::base::PlannerPtr planner =
             configurePlanner(setup.ss->getSpaceInformation(), {plannerName, params, !startYaw, smooth});
-        const QueryResult q = runQuery(setup, planner, start, goal, timeLimit, !goalYaw);
+        const QueryResult q = runQuery(setup, planner, start, goal, timeLimit, !goalYaw, tolerance);
         PlanResult r;
         r.status = q.status.asString();
         r.exact = q.status == ompl::base::PlannerStatus::EXACT_SOLUTION;
@@ -295,8 +322,9 @@ struct Scene
     }
 
     DriveResult drive(const py::object &pathObj, const py::object &scenarioObj, double dt, double xi, double eta, double rho0,
-                      double timeLimit)
+                      double timeLimit, const py::object &toleranceObj)
     {
+        const GoalTolerance tolerance = toleranceOf(toleranceObj);
         if (!(dt > 0) || dt > 1.0) throw InputError("dt must be in (0, 1] s");
         if (!(xi >= 0) || !(eta >= 0) || !(rho0 > 0) || !std::isfinite(xi + eta + rho0))
             throw InputError("xi and eta must be >= 0 and rho0 > 0 (finite)");
@@ -310,6 +338,8 @@ struct Scene
         fp.eta = eta;
         fp.rho0 = rho0;
         fp.timeLimit = timeLimit;
+        if (tolerance.position > 0) fp.goalTolerance = tolerance.position;
+        if (tolerance.yaw > 0) fp.goalYawTolerance = tolerance.yaw;
         py::gil_scoped_release nogil;
         std::lock_guard<std::mutex> lock(busy);
         if (!setup.checker->isValid(path.front()))
@@ -537,9 +567,10 @@ plan side by side.)doc")
         .def_readonly("space", &Scene::spaceName, "'se2', 'dubins' or 'reeds-shepp'")
         .def("plan", &Scene::plan, py::arg("start"), py::arg("goal"), py::arg("planner") = "corner-astar",
              py::arg("settings") = py::dict(), py::arg("time_limit") = 10.0, py::arg("smooth") = false,
-             R"doc(Plans start -> goal (see gridcar.plan()).)doc")
+             py::arg("goal_tolerance") = py::none(), R"doc(Plans start -> goal (see gridcar.plan()).)doc")
         .def("drive", &Scene::drive, py::arg("path"), py::arg("scenario") = py::none(), py::arg("dt") = 0.05,
              py::arg("xi") = 1.0, py::arg("eta") = 0.6, py::arg("rho0") = 1.5, py::arg("time_limit") = 0.0,
+             py::arg("goal_tolerance") = py::none(),
              R"doc(Drives a path (see gridcar.drive()).)doc")
         .def("why_invalid", [](const Scene &s, const py::object &pose) {
                 bool hasYaw = false;

@@ -201,6 +201,23 @@ def test_drive_reaches_the_goal():
         scene.drive(np.array([[25.2, 25.0, 0.0], [30.0, 25.0, 0.0]]))
 
 
+def test_goal_tolerance_in_plan_and_drive():
+    m = gridcar.Map.from_array(walled(), resolution=0.5)
+    scene = gridcar.Scene(m, vehicle="paper-i")
+    exact = scene.plan((5, 5, 0), (45, 20, math.pi / 2))
+    r = gridcar.plan(m, (5, 5, 0), (45, 20, math.pi / 2), goal_tolerance=(1.0, 0.3))
+    assert r.exact and r.drivable
+    x, y, yaw = r.path[-1]
+    assert math.hypot(x - 45, y - 20) <= 1.0 + 1e-6
+    assert abs(math.remainder(yaw - math.pi / 2, 2 * math.pi)) <= 0.3 + 1e-6
+    assert r.length <= exact.length + 1e-6
+    d = scene.drive(r, goal_tolerance=(0.5, 0.3))
+    assert d.reached, d.reason
+    for bad in [(-1.0, 0.0), (0.5, 4.0), "abc", (1.0, 2.0, 3.0), float("nan")]:
+        with pytest.raises(gridcar.InputError, match="goal_tolerance"):
+            scene.plan((5, 5, 0), (45, 20), goal_tolerance=bad)
+
+
 def test_threads_drive_side_by_side_with_the_same_answers():
     """Drives in four threads (a scene each, the GIL released while they run) give the one
     thread's trajectory, sample for sample."""
