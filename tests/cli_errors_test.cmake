@@ -99,3 +99,13 @@ string(FIND "${OUT}" "OMPL's parameter of this planner" generic)
 if(NOT generic EQUAL -1)
   message(FATAL_ERROR "a parameter has no line of its own in gridcar planners: ${OUT}")
 endif()
+
+# OMPL's BIT* (k-nearest by default) runs without its renaming warning, a value set or not
+foreach(extra "" "--param;rewire_factor=1.2")
+  execute_process(COMMAND "${GRIDCAR}" plan ${M} --planner bitstar --start-cell 0,0 --goal-cell 11,5 --time-limit 0.3
+                  --allow-undrivable ${extra} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+  string(FIND "${err}" "kBITstar" renamed)
+  if(NOT renamed EQUAL -1 OR rc GREATER 3)
+    message(FATAL_ERROR "bitstar ${extra}: exit ${rc}, stderr: ${err}")
+  endif()
+endforeach()

@@ -2,11 +2,11 @@
 // that plan or drive use 3 for "ran, but no exact solution / did not reach the goal".
 #include "Cli.h"
 
+#include "gridcar/query/PlainLog.h"
 #include "gridcar/version.h"
 
 #include <nlohmann/json.hpp>
 #include <ompl/config.h>
-#include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
 #include <cstdio>
@@ -25,20 +25,6 @@ std::string versionText()
     return std::string("gridcar ") + GRIDCAR_VERSION + " (OMPL " + std::to_string(OMPL_MAJOR_VERSION) + "." +
            std::to_string(OMPL_MINOR_VERSION) + "." + std::to_string(OMPL_PATCH_VERSION) + ")";
 }
-
-/// OMPL's log on stderr as OMPL prints it ("Warning: ..."), without the source file and line
-/// it adds (a user reads the message, not where in OMPL's or gridcar's sources it was raised).
-struct CliLog : ompl::msg::OutputHandler
-{
-    void log(const std::string &text, ompl::msg::LogLevel level, const char *, int) override
-    {
-        const char *tag = level >= ompl::msg::LOG_ERROR  ? "Error: "
-                          : level >= ompl::msg::LOG_WARN ? "Warning: "
-                          : level >= ompl::msg::LOG_INFO ? "Info: "
-                                                         : "Debug: ";
-        std::fprintf(stderr, "%s%s\n", tag, text.c_str());
-    }
-};
 
 /// True if --json is among the arguments: errors are then a JSON object on stdout as well.
 bool jsonAsked(int argc, char **argv)
@@ -105,8 +91,7 @@ int guarded(const std::function<int()> &run, bool json)
 int main(int argc, char **argv)
 {
     using namespace gridcar::cli;
-    static CliLog log;  // (OMPL keeps a pointer to it: it lives as long as the process)
-    ompl::msg::useOutputHandler(&log);
+    gridcar::usePlainLog();  // OMPL's log lines without their source file and line
     CLI::App app{"gridcar: vehicle-aware grid planners for OMPL (grid A* baselines, corner-weighted A*, improved A*) "
                  "and a benchmark harness against OMPL's sampling planners.\n"
                  "Maps: ROS map_server .yaml (+ PGM/PNG), Moving AI .map, plain .ppm/.pgm/.png (dark = occupied)."};

@@ -34,7 +34,9 @@ namespace
 class BenchmarkSafeBITstar : public ompl::geometric::BITstar
 {
 public:
-    explicit BenchmarkSafeBITstar(const ompl::base::SpaceInformationPtr &si) : BITstar(si)
+    // named as OMPL names its default (k-nearest) version: constructed as "BITstar", its setup()
+    // renames it "kBITstar" with a warning at every solve's first set-up
+    explicit BenchmarkSafeBITstar(const ompl::base::SpaceInformationPtr &si) : BITstar(si, "kBITstar")
     {
         plannerProgressProperties_.erase("current free states INTEGER");
         plannerProgressProperties_.erase("current graph vertices INTEGER");

@@ -7,6 +7,7 @@
 #include "gridcar/map/OccupancyGrid.h"
 #include "gridcar/path/PathIO.h"
 #include "gridcar/planners/PlannerFactory.h"
+#include "gridcar/query/PlainLog.h"
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/sim/Simulation.h"
 #include "gridcar/spaces/CarSpaces.h"
@@ -391,6 +392,7 @@ PYBIND11_MODULE(_gridcar, m)
     m.doc() = "gridcar: vehicle-aware grid planners for OMPL (corner-weighted A*, improved A*) on occupancy-grid maps.";
     m.attr("__version__") = GRIDCAR_VERSION;
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    usePlainLog();  // warnings on stderr without OMPL's source file and line, as the program's
 
     // our exceptions as Python ones, with the same messages (bad input: ValueError's kind)
     static py::exception<MapLoadError> mapLoadError(m, "MapLoadError", PyExc_ValueError);

@@ -157,6 +157,17 @@ def test_a_pose_on_unknown_cells_names_the_python_switch():
     assert gridcar.plan(free, (2, 5), (15, 5), vehicle="paper-c-robot").exact
 
 
+def test_log_lines_carry_no_source_location(capfd):
+    occ = walled(wall=False)
+    occ[10:20, 70:80] = True
+    occ[12:18, 72:78] = False  # a closed room, 3 m across: the goal inside is cut off
+    m = gridcar.Map.from_array(occ, resolution=0.5)
+    r = gridcar.plan(m, (5, 5, 0), (37.5, 7.5, 0), vehicle="paper-c-robot", time_limit=2)
+    assert not r.exact
+    err = capfd.readouterr().err
+    assert "Warning: corner-astar:" in err and " at line " not in err, err
+
+
 def test_every_public_name_has_a_docstring():
     missing = []
     for cname in ["Map", "Vehicle", "Scene", "PlanResult", "DriveResult"]:

@@ -78,11 +78,11 @@ void checkOmplValue(const ompl::base::Planner &planner, const std::string &name,
     char *end = nullptr;
     const double v = std::strtod(value.c_str(), &end);
     if (value.empty() || *end != '\0' || !std::isfinite(v) || (whole && v != std::floor(v)))
-        throw InputError(refused + (whole ? "not a whole number" : "not a number") + " (its range: " + range + ")");
+        throw InputError(refused + (whole ? "not a whole number" : "not a number") + " (OMPL's suggested range: " + range + ")");
     // (a suggestion's lower end is not a limit: a count or a factor below it still works)
     if ((lo >= 0 && v < 0) || (lo >= 0 && hi <= 1.0 && v > hi))
         throw InputError(refused + (hi <= 1.0 ? "outside [0, " + settings::print(hi) + "]" : "negative") +
-                         " (its range: " + range + ")");
+                         " (OMPL's suggested range: " + range + ")");
 }
 
 void applyParam(ompl::base::Planner &planner, const std::string &name, const std::string &value, bool omplPlanner)
@@ -126,7 +126,7 @@ void applyParam(ompl::base::Planner &planner, const std::string &name, const std
     const bool ours = why.rfind(planner.getName() + ":", 0) == 0;
     const std::string range = ours ? "" : planner.params().getParam(name)->getRangeSuggestion();
     throw InputError("planner " + planner.getName() + ": parameter " + name + "=" + value + " not accepted" +
-                     (why.empty() ? "" : ": " + why) + (range.empty() ? "" : " (its range: " + range + ")"));
+                     (why.empty() ? "" : ": " + why) + (range.empty() ? "" : " (OMPL's suggested range: " + range + ")"));
 }
 
 }  // namespace
