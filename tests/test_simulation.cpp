@@ -338,3 +338,24 @@ TEST(Simulation, AGoalHeadingToleranceIsChecked)
     path.back().yaw = 0.1;
     EXPECT_EQ(drivePath(path, *s.checker, Scenario(), fp).outcome, DriveResult::Outcome::Reached);
 }
+
+// A box standing beside the road, 0.58 m from paper I's car's side as it passes: the safety
+// rollout keeps the body clear of it by discs that cover the body (its circumscribed disc,
+// 2.9 m across the road, refused every command there and the drive ended stuck).
+TEST(Simulation, AStandingBoxBesideTheRoadIsDrivenPast)
+{
+    GridSetup s = road(60.0, 10.0, "paper-i");
+    const double y = s.grid->cellCenterY(s.grid->height() / 2);
+    Scenario sc;
+    MovingObstacle box;
+    box.name = "parked van";
+    box.shape = MovingObstacle::Shape::Box;
+    box.sizeX = 4.0, box.sizeY = 1.0;
+    box.waypoints = {{30.0, y + 2.0}};  // its near side 1.5 m from the path's line
+    box.speed = 0.0;
+    sc.obstacles.push_back(box);
+    const DriveResult r = drivePath(straight(5.0, 55.0, y), *s.checker, sc);
+    ASSERT_EQ(r.outcome, DriveResult::Outcome::Reached) << r.reason;
+    EXPECT_GT(r.minClearance, 0.3);
+    EXPECT_LT(r.crossTrackMax, 0.5);
+}

@@ -29,13 +29,7 @@ void Follower::safeCommand(const VehicleState &st, double t, double steerCmd, do
             r = stepBicycle(r, veh_, steer, std::min(v, vStop), prm_.dt);
             travelled += std::hypot(r.x - before.x, r.y - before.y);
             // every step: the body can swing into a corner between two checks further apart
-            if (!checker_.isValid(r.x, r.y, r.yaw)) return k - 1;
-            for (const MovingObstacle &m : scenario_.obstacles)
-            {
-                if (!(m.distanceFrom(r.x + veh_.centreOffset() * std::cos(r.yaw), r.y + veh_.centreOffset() * std::sin(r.yaw),
-                                     t + k * prm_.dt) > veh_.circumscribedRadius()))
-                    return k - 1;
-            }
+            if (!checker_.isValid(r.x, r.y, r.yaw) || !clearOfObstacles(r, t + k * prm_.dt)) return k - 1;
         }
         return steps;
     };
@@ -76,6 +70,26 @@ void Follower::safeCommand(const VehicleState &st, double t, double steerCmd, do
                       steerCmd, checker_.clearance(st.x, st.y, st.yaw));
         limit_ = buf;
     }
+}
+
+bool Follower::clearOfObstacles(const VehicleState &r, double t) const
+{
+    if (scenario_.obstacles.empty()) return true;
+    // the body's rectangle covered by n discs along its axis, each reaching the corners of its
+    // slice (at most a width long): an obstacle farther than a disc's radius from every centre
+    // is clear of the body. The circumscribed disc alone refused every command of paper I's car
+    // (2.9 m radius) with a box standing 2 m beside it; its discs reach 1.2 m
+    const double len = std::max(veh_.length, 0.0), w = std::max(veh_.width, 0.0);
+    const int n = std::max(1, int(std::ceil(len / std::max(w, 1e-6) - 1e-9)));
+    const double s = len / n, radius = std::hypot(w / 2, s / 2);
+    const double c = std::cos(r.yaw), sn = std::sin(r.yaw);
+    for (const MovingObstacle &m : scenario_.obstacles)
+        for (int i = 0; i < n; ++i)
+        {
+            const double along = -veh_.rearOverhang + s * (i + 0.5);
+            if (!(m.distanceFrom(r.x + along * c, r.y + along * sn, t) > radius)) return false;
+        }
+    return true;
 }
 
 bool Follower::bodyFree(const VehicleState &st, double t, DriveResult &res, double &clearance) const

@@ -283,6 +283,10 @@ public:
     void safeCommand(const VehicleState &st, double t, double steerCmd, double vCmd, double &steerUse, double &vUse,
                      double steerTrack) const;
 
+    /// True if the body at @p r keeps clear of every obstacle of the scenario at time @p t, by
+    /// discs that cover its rectangle (conservative: a false answer may still be free).
+    bool clearOfObstacles(const VehicleState &r, double t) const;
+
     /// Collision of the body with the map (FCL footprint checker) or a moving obstacle (FCL):
     /// false with the reason in @p res; else @p clearance is the body's clearance.
     bool bodyFree(const VehicleState &st, double t, DriveResult &res, double &clearance) const;
