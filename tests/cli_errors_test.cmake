@@ -52,6 +52,11 @@ string(FIND "${ERR}" "Failed converting" leaked)
 if(NOT leaked EQUAL -1)
   message(FATAL_ERROR "OMPL's conversion message leaked: ${ERR}")
 endif()
+# the same by OMPL's class name and with a post-processing suffix
+run_gridcar(2 plan ${M} --planner RRT --start-cell 0,0 --goal-cell 11,5 --param goal_bias=7)
+expect_in("${ERR}" "goal_bias=7 not accepted: outside [0, 1]")
+run_gridcar(2 plan ${M} --planner rrtconnect+smooth --start-cell 0,0 --goal-cell 11,5 --param range=-1)
+expect_in("${ERR}" "range=-1 not accepted: negative")
 # values in range still go through
 run_gridcar(0 plan ${M} --planner rrtconnect --start-cell 0,0 --goal-cell 11,5 --param range=2 --allow-undrivable)
 

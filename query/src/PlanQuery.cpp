@@ -146,8 +146,14 @@ ompl::base::PlannerPtr configurePlanner(const ompl::base::SpaceInformationPtr &s
     ompl::base::PlannerPtr planner = makePlanner(si, name);
     if (config.freeStartHeading && planner->params().hasParam("free_start_heading"))
         planner->params().setParam("free_start_heading", "1");
-    const std::vector<std::string> ompls = omplPlannerNames();
-    const bool omplPlanner = std::find(ompls.begin(), ompls.end(), name) != ompls.end();
+    // OMPL's planners (any case of their names, with or without a post-processing suffix) get
+    // their values checked first
+    std::string base = name;
+    for (const std::string suffix : {"+smooth", "+simplify"})
+        if (base.size() > suffix.size() && base.compare(base.size() - suffix.size(), suffix.size(), suffix) == 0)
+            base.erase(base.size() - suffix.size());
+    const PlannerEntry *entry = findPlanner(base);
+    const bool omplPlanner = entry && !entry->ours;
     for (const auto &kv : params) applyParam(*planner, kv.first, kv.second, omplPlanner);
     if (config.smooth && !reportOf(*planner).smoothsItself) planner = std::make_shared<SmoothedPlanner>(planner);
     return planner;
