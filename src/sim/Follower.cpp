@@ -76,11 +76,11 @@ bool Follower::clearOfObstacles(const VehicleState &r, double t) const
 {
     if (scenario_.obstacles.empty()) return true;
     // the body's rectangle covered by n discs along its axis, each reaching the corners of its
-    // slice (at most a width long): an obstacle farther than a disc's radius from every centre
+    // slice (at most a width long, for bodies up to 32 widths long): an obstacle farther than a disc's radius from every centre
     // is clear of the body. The circumscribed disc alone refused every command of paper I's car
     // (2.9 m radius) with a box standing 2 m beside it; its discs reach 1.2 m
     const double len = std::max(veh_.length, 0.0), w = std::max(veh_.width, 0.0);
-    const int n = std::max(1, int(std::ceil(len / std::max(w, 1e-6) - 1e-9)));
+    const int n = int(std::clamp(std::ceil(len / std::max(w, 1e-6) - 1e-9), 1.0, 32.0));  // (a needle-thin body: 32)
     const double s = len / n, radius = std::hypot(w / 2, s / 2);
     const double c = std::cos(r.yaw), sn = std::sin(r.yaw);
     for (const MovingObstacle &m : scenario_.obstacles)
