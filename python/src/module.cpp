@@ -203,8 +203,6 @@ struct PlanResult
     std::string notDrivableBecause, notExactBecause;
 };
 
-/// A map, a vehicle and an OMPL set-up on them (distance field, FCL footprint checker, the
-/// space): made once, then any number of plans and drives. One query at a time per scene.
 /// goal_tolerance: None (exact), a position tolerance in metres, or (metres, radians).
 GoalTolerance toleranceOf(const py::object &o)
 {
@@ -231,6 +229,8 @@ GoalTolerance toleranceOf(const py::object &o)
     return t;
 }
 
+/// A map, a vehicle and an OMPL set-up on them (distance field, FCL footprint checker, the
+/// space): made once, then any number of plans and drives. One query at a time per scene.
 struct Scene
 {
     std::shared_ptr<Map> map;
