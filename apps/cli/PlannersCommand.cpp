@@ -23,16 +23,6 @@ struct PlannersOptions
     bool json{false};
 };
 
-/// The kind of value a parameter takes, from OMPL's range suggestion of it: "flag" (0,1),
-/// "choice" (words), "number" or "whole number" (LOW:STEP:HIGH or LOW:HIGH), "text".
-std::string valueType(const std::string &range)
-{
-    if (range == "0,1") return "flag";
-    if (range.find(':') != std::string::npos) return range.find('.') == std::string::npos ? "whole number" : "number";
-    if (range.find(',') != std::string::npos) return "choice";
-    return "text";
-}
-
 int runPlanners(const PlannersOptions &o)
 {
     // (reading some of OMPL's parameters warns that they no longer act: the list says what they are)
@@ -63,7 +53,7 @@ int runPlanners(const PlannersOptions &o)
         {
             const std::string range = p->params().getParam(param)->getRangeSuggestion();
             const std::string help = parameterHelp(param);
-            const std::string type = valueType(range);
+            const std::string type = parameterType(range);
             list.push_back({{"name", param}, {"default", value}, {"type", type}, {"sweep_range", range}, {"help", help}});
             if (!o.json)
                 std::printf("  %-26s default %-10s %-12s %s%s%s\n", param.c_str(), value.empty() ? "(unset)" : value.c_str(),

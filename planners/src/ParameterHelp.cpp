@@ -75,4 +75,12 @@ std::string parameterHelp(const std::string &name)
     return "OMPL's parameter of this planner (see OMPL's documentation of the planner)";
 }
 
+std::string parameterType(const std::string &range)
+{
+    if (range == "0,1") return "flag";
+    if (range.find(':') != std::string::npos) return range.find('.') == std::string::npos ? "whole number" : "number";
+    if (range.find(',') != std::string::npos) return "choice";
+    return "text";
+}
+
 }  // namespace gridcar

@@ -3,6 +3,7 @@
 #include "gridcar/core/Cusps.h"
 
 #include "gridcar/core/Errors.h"
+#include "gridcar/planners/ParameterHelp.h"
 #include "gridcar/planners/PlannerReport.h"
 #include "gridcar/planners/Settings.h"
 #include "gridcar/planners/PlannerFactory.h"
@@ -65,16 +66,17 @@ void checkOmplValue(const ompl::base::Planner &planner, const std::string &name,
 {
     const std::string range = planner.params().getParam(name)->getRangeSuggestion();
     const std::string refused = "planner " + planner.getName() + ": parameter " + name + "=" + value + " not accepted: ";
-    if (range == "0,1")
+    const std::string type = parameterType(range);
+    if (type == "flag")
     {
         for (const char *ok : {"0", "1", "true", "false"})
             if (value == ok) return;
         throw InputError(refused + "a flag takes 0, 1, true or false");
     }
-    const std::size_t c1 = range.find(':'), c2 = range.rfind(':');
-    if (c1 == std::string::npos) return;  // (lo:hi or lo:step:hi)
+    if (type != "number" && type != "whole number") return;
+    const std::size_t c1 = range.find(':'), c2 = range.rfind(':');  // (lo:hi or lo:step:hi)
     const double lo = std::strtod(range.substr(0, c1).c_str(), nullptr), hi = std::strtod(range.substr(c2 + 1).c_str(), nullptr);
-    const bool whole = range.find('.') == std::string::npos;
+    const bool whole = type == "whole number";
     char *end = nullptr;
     const double v = std::strtod(value.c_str(), &end);
     if (value.empty() || *end != '\0' || !std::isfinite(v) || (whole && v != std::floor(v)))

@@ -13,4 +13,9 @@ namespace gridcar
 /// other OMPL parameter a line saying where it is documented.
 std::string parameterHelp(const std::string &name);
 
+/// The kind of value a parameter takes, read off its OMPL range suggestion @p range: "flag"
+/// (0,1), "whole number" or "number" (LOW:STEP:HIGH or LOW:HIGH, whole where no bound has a
+/// decimal point), "choice" (words separated by commas), else "text".
+std::string parameterType(const std::string &range);
+
 }  // namespace gridcar
