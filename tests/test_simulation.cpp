@@ -359,3 +359,37 @@ TEST(Simulation, AStandingBoxBesideTheRoadIsDrivenPast)
     EXPECT_GT(r.minClearance, 0.3);
     EXPECT_LT(r.crossTrackMax, 0.5);
 }
+
+// A run that goes on from an earlier one, rolling (a navigation loop's replan): it starts at the
+// speed and steering it is given, drives on without braking to a standstill and so takes less
+// time than from rest; an interrupt with interruptRolling ends it at once, still rolling; a
+// rolling start into a piece of the other gear is refused.
+TEST(Simulation, ARollingStartDrivesOnAtItsSpeed)
+{
+    GridSetup s = road(60.0, 4.0);
+    const double y = s.grid->cellCenterY(s.grid->height() / 2);
+    const auto path = straight(5.0, 45.0, y);
+    const double v0 = 0.8 * s.checker->vehicle().maxSpeed;
+    const DriveResult fromRest = drivePath(path, *s.checker, Scenario());
+    ASSERT_EQ(fromRest.outcome, DriveResult::Outcome::Reached) << fromRest.reason;
+    FollowerParams fp;
+    fp.startState = VehicleState{5.0, y, 0.0, v0, 0.0};
+    const DriveResult rolling = drivePath(path, *s.checker, Scenario(), fp);
+    ASSERT_EQ(rolling.outcome, DriveResult::Outcome::Reached) << rolling.reason;
+    ASSERT_GT(rolling.trajectory.size(), 20u);
+    double slowest = 1e9;
+    for (std::size_t i = 0; i < 20; ++i) slowest = std::min(slowest, rolling.trajectory[i].v);
+    EXPECT_GT(slowest, 0.9 * v0);
+    EXPECT_LT(rolling.drivingTime, fromRest.drivingTime - 0.3 * v0 / s.checker->vehicle().acceleration);
+
+    fp.interruptRolling = true;
+    fp.interrupt = [](const VehicleState &st, double) { return st.x > 20.0; };
+    const DriveResult cut = drivePath(path, *s.checker, Scenario(), fp);
+    ASSERT_EQ(cut.outcome, DriveResult::Outcome::Interrupted) << cut.reason;
+    EXPECT_GT(cut.finalState.v, 0.5 * v0);
+    EXPECT_NEAR(cut.finalState.x, 20.0, 0.2);
+
+    fp.interrupt = nullptr;
+    fp.startState = VehicleState{5.0, y, 0.0, -0.3, 0.0};  // rolling backwards into a forward path
+    EXPECT_THROW(drivePath(path, *s.checker, Scenario(), fp), std::invalid_argument);
+}

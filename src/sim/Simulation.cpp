@@ -140,7 +140,11 @@ struct DriveRun
             ++steps;
             // interrupted: brake to a standstill, still steering along the path (a car braking
             // from speed with its wheels held leaves a curved road)
-            if (!stopping && prm.interrupt && prm.interrupt(backward ? turnedRound(st) : st, t)) stopping = true;
+            if (!stopping && prm.interrupt && prm.interrupt(backward ? turnedRound(st) : st, t))
+            {
+                if (prm.interruptRolling) return interrupted(follower, st);
+                stopping = true;
+            }
             if (stopping && std::abs(st.v) <= 1e-9) return interrupted(follower, st);
             const Pose2 &end = path.pts.back();
             const double toEnd = std::hypot(st.x - end.x, st.y - end.y);
@@ -307,6 +311,11 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
     run.t = prm.startTime;
     run.car = &checker;
     run.mirror = &reverseChecker;
+    // a rolling start: in the first piece's gear, its profile from the speed the car has
+    const double rollIn = prm.startState ? std::abs(prm.startState->v) : 0.0;
+    if (rollIn > 1e-9 && (prm.startState->v < 0) != pieces.front().backward)
+        throw std::invalid_argument("drivePath: the vehicle rolls " + std::string(prm.startState->v < 0 ? "backwards" : "forwards") +
+                                    " at " + std::to_string(rollIn) + " m/s into a path whose first piece is driven the other way");
     std::vector<std::unique_ptr<detail::TrackedPath>> tracked;
     double budget = 0.0;
     for (PathPiece &p : pieces)
@@ -314,7 +323,7 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
         const FootprintChecker &fc = run.checkerFor(p.backward);
         if (p.backward)
             for (Pose2 &q : p.poses) q.yaw = wrapAngle(q.yaw + M_PI);
-        tracked.push_back(std::make_unique<detail::TrackedPath>(p.poses, fc));
+        tracked.push_back(std::make_unique<detail::TrackedPath>(p.poses, fc, tracked.empty() ? rollIn : 0.0));
         res.pathLength += tracked.back()->total;
         // three times the piece's planned driving time (its velocity profile, corners and the
         // steering-rate cap included): 5 x length / v_max timed out a 30 m/s car on a campus
@@ -323,10 +332,15 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
     run.tmax = prm.startTime + (prm.timeLimit > 0 ? prm.timeLimit : 50.0 + budget);
     res.minClearance = detail::kInf;
     VehicleState st;
-    st.x = pieces.front().poses.front().x;
-    st.y = pieces.front().poses.front().y;
-    const auto &p0 = tracked.front()->pts;
-    st.yaw = std::atan2(p0[1].y - p0[0].y, p0[1].x - p0[0].x);  // turned round already for a reverse piece
+    if (prm.startState)  // in the first piece's frame (turned round for a reverse piece)
+        st = pieces.front().backward ? turnedRound(*prm.startState) : *prm.startState;
+    else
+    {
+        st.x = pieces.front().poses.front().x;
+        st.y = pieces.front().poses.front().y;
+        const auto &p0 = tracked.front()->pts;
+        st.yaw = std::atan2(p0[1].y - p0[0].y, p0[1].x - p0[0].x);  // turned round already for a reverse piece
+    }
     run.record(st, pieces.front().backward);
     bool ok = true, backward = pieces.front().backward;
     for (std::size_t k = 0; k < pieces.size() && ok; ++k)

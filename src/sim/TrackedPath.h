@@ -31,7 +31,8 @@ struct TrackedPath
     VelocityProfile profile;
     double total{0.0};
 
-    TrackedPath(const std::vector<Pose2> &path, const FootprintChecker &checker)
+    /// @p startSpeed: m/s the vehicle rolls into the path with (0: it starts from rest)
+    TrackedPath(const std::vector<Pose2> &path, const FootprintChecker &checker, double startSpeed = 0.0)
     {
         for (const Pose2 &p : path)
             if (pts.empty() || !samePosition(p, pts.back())) pts.push_back(p);
@@ -50,7 +51,9 @@ struct TrackedPath
             if (j < pts.size() && std::abs(wrapAngle(h1 - h0)) > 10.0 * M_PI / 180.0) cornerS.push_back(cum[j]);
         }
         const VehicleParams &veh = checker.vehicle();
-        profile = velocityProfile(pts, veh);
+        DrivingTimeParams dp;
+        dp.startSpeed = startSpeed;
+        profile = velocityProfile(pts, veh, dp);
         const DistanceField &field = checker.field();
         for (std::size_t i = 0; i < pts.size(); ++i)
         {

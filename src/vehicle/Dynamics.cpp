@@ -157,7 +157,7 @@ VelocityProfile velocityProfile(const std::vector<Pose2> &path, const VehiclePar
     }
     if (p.stopAtEnds)
     {
-        vel.front() = 0.0;
+        vel.front() = std::min(vel.front(), std::max(p.startSpeed, 0.0));
         vel.back() = 0.0;
     }
     for (int k = 1; k < N; ++k) vel[k] = std::min(vel[k], std::sqrt(vel[k - 1] * vel[k - 1] + 2 * v.acceleration * ds));

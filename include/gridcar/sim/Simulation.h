@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,15 @@ struct FollowerParams
     /// reversing) and the time: true stops the run, the car braking to a standstill on its
     /// course, and it ends as Interrupted (a navigation loop's "the path ahead is blocked").
     std::function<bool(const VehicleState &, double)> interrupt;
+    /// With true, an interrupt ends the run at once, the vehicle still rolling (finalState keeps
+    /// its speed and steering): the caller goes on from that state on a new path (startState)
+    /// or brakes it to a standstill. false: it brakes to a standstill first.
+    bool interruptRolling{false};
+    /// The vehicle's state at the start when it goes on from an earlier run, rolling (its body's
+    /// pose, speed, negative in reverse, and steering): the path's first piece must be in that
+    /// gear (std::invalid_argument otherwise) and its profile starts from that speed. Unset: at
+    /// rest on the path's first pose, heading along it.
+    std::optional<VehicleState> startState;
 };
 
 /// One simulated step, for the trajectory CSV and pictures.

@@ -54,6 +54,9 @@ struct DrivingTimeParams
     double sampleStep{0.25};  ///< m between profile samples
     double window{2.0};       ///< m, chord before / after a sample for its heading change
     bool stopAtEnds{true};    ///< start from rest and stop at the goal
+    /// m/s at the start when stopAtEnds (a vehicle already rolling into the path): the profile
+    /// starts from this speed, not from rest (it still brakes where the path asks for less)
+    double startSpeed{0.0};
     /// A path that reverses: a stop at each cusp (splitAtCusps()), each piece from rest to rest,
     /// a piece driven backwards within reverseSpeedLimit().
     bool reversing{false};
