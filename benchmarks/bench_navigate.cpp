@@ -50,13 +50,14 @@ struct Options
     unsigned seed{1};
     double limit{5.0};
     std::vector<std::string> only;
+    bool stopToReplan{false};
 };
 
 struct Tally
 {
     int runs{0}, reached{0}, collided{0}, blockedReported{0}, stuck{0}, other{0}, touched{0};
     std::vector<double> replanSeconds, timeRatio;
-    int replans{0};
+    int replans{0}, rolling{0};
 };
 
 /// The worst clearance of the drive's samples: the body against the true map (its checker's
@@ -153,6 +154,7 @@ void run(const Options &o, const Area &a)
             NavigationOptions no;
             no.planTimeLimit = o.limit;
             no.sensor.range = a.range;
+            no.replanRolling = !o.stopToReplan;
             const auto t0 = std::chrono::steady_clock::now();
             Navigator nav(grid, vehicle, no);
             const NavigationResult r = nav.run(s, g, true, sc);
@@ -171,13 +173,14 @@ void run(const Options &o, const Area &a)
                 default: ++t.other; break;
             }
             t.replans += r.replans;
+            t.rolling += r.rollingReplans;
             t.replanSeconds.insert(t.replanSeconds.end(), r.replanSeconds.begin(), r.replanSeconds.end());
             if (r.outcome == NavigationResult::Outcome::Reached && std::isfinite(knownTime)) t.timeRatio.push_back(r.drivingTime / knownTime);
             std::fprintf(stderr, "%s %s pair %zu%s: --start %.2f,%.2f,%.1f --goal %.2f,%.2f, box %.2f x %.2f m at %.2f,%.2f, %s (%s), "
-                                 "%d replans, %d retreats, %.1f s driven (known in advance %.1f s), worst clearance %.2f m, %.1f s wall\n",
+                                 "%d replans (%d rolling), %d retreats, %.1f s driven (known in advance %.1f s), worst clearance %.2f m, %.1f s wall\n",
                          a.area.name.c_str(), a.area.vehicle.c_str(), k, ped ? " + pedestrian" : "", s.x, s.y, s.yaw * 180 / M_PI, g.x,
                          g.y, bx, by, c.x, c.y,
-                         NavigationResult::outcomeName(r.outcome).c_str(), r.reason.c_str(), r.replans, r.retreats, r.drivingTime, knownTime,
+                         NavigationResult::outcomeName(r.outcome).c_str(), r.reason.c_str(), r.replans, r.rollingReplans, r.retreats, r.drivingTime, knownTime,
                          worst, wall);
         }
     }
@@ -185,8 +188,8 @@ void run(const Options &o, const Area &a)
     for (const Tally &t : tally)
     {
         const auto q = [&](const std::vector<double> &v, double p, double scale) { return v.empty() ? NAN : scale * quantile(v, p); };
-        std::printf(" %d / %d | %d | %d | %d | %d | %.2f / %.2f |", t.reached + t.blockedReported, t.runs, t.collided + t.touched, t.stuck,
-                    t.other, t.replans, q(t.timeRatio, 0.5, 1.0), q(t.timeRatio, 0.9, 1.0));
+        std::printf(" %d / %d | %d | %d | %d | %d (%d) | %.2f / %.2f |", t.reached + t.blockedReported, t.runs, t.collided + t.touched,
+                    t.stuck, t.other, t.replans, t.rolling, q(t.timeRatio, 0.5, 1.0), q(t.timeRatio, 0.9, 1.0));
         if (&t == &tally[0])
             std::printf(" %.0f / %.0f / %.0f |", q(t.replanSeconds, 0.5, 1e3), q(t.replanSeconds, 0.95, 1e3), q(t.replanSeconds, 1.0, 1e3));
     }
@@ -205,12 +208,15 @@ int main(int argc, char **argv)
     app.add_option("--seed", o.seed, "Seed of the pairs, the boxes and OMPL's random numbers")->capture_default_str();
     app.add_option("--time-limit", o.limit, "Seconds per plan")->capture_default_str();
     app.add_option("--only", o.only, "Only these areas (willow-garage, mit-stata, tsudanuma) or vehicles");
+    app.add_flag("--stop-to-replan", o.stopToReplan,
+                 "Brake to a standstill before every replan (NavigationOptions::replanRolling off: the behaviour before "
+                 "replanning while rolling)");
     CLI11_PARSE(app, argc, argv);
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     ompl::RNG::setSeed(o.seed);
     std::printf("| map | vehicle | pairs planned | no detour (box closes the way) | reached or reported blocked | collisions | stuck | "
-                "other | replans | driving time / known in advance: median / p90 | replan (update + search) median / p95 / max "
-                "(ms) | with a pedestrian: reached or reported | collisions | stuck | other | replans | time ratio median / p90 |\n");
+                "other | replans (while rolling) | driving time / known in advance: median / p90 | replan (update + search) median / p95 / max "
+                "(ms) | with a pedestrian: reached or reported | collisions | stuck | other | replans (while rolling) | time ratio median / p90 |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Area &a : kAreas)
     {

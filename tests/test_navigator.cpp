@@ -59,8 +59,8 @@ TEST(Navigator, AKnownWorldIsDrivenWithoutReplanning)
     EXPECT_LT(std::hypot(r.finalPose.x - 37.0, r.finalPose.y - 6.0), 0.35);
 }
 
-// A pallet across the planned route, not in the map: the sensor sees it, the car stops, plans
-// round it from where it stands and arrives; no sample of the drive touches anything.
+// A pallet across the planned route, not in the map: the sensor sees it, the robot plans
+// round it from where it is and arrives; no sample of the drive touches anything.
 TEST(Navigator, AnUnmappedObstacleAcrossTheRouteIsSeenAndDrivenRound)
 {
     Scenario sc;
@@ -84,6 +84,32 @@ TEST(Navigator, AnUnmappedObstacleAcrossTheRouteIsSeenAndDrivenRound)
     // the drive went round it: further than the straight line
     EXPECT_GT(r.distanceDriven, 34.5);
     EXPECT_LT(std::hypot(r.finalPose.x - 37.0, r.finalPose.y - 6.0), 0.35);
+}
+
+// Replanning while rolling: the pallet seen ahead, the new plan starts where the robot rolls and
+// it drives on into it; the same run braking to a standstill before every replan takes longer.
+TEST(Navigator, AReplanWhileRollingDrivesOnWithoutStopping)
+{
+    Scenario sc;
+    sc.obstacles.push_back(standingBox(20.0, 5.0, 1.0, 8.0));
+    const VehicleParams robot = VehicleParams::preset("paper-c-robot");
+    Navigator rollingNav(hall(), robot);
+    const NavigationResult rolling = rollingNav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, sc);
+    NavigationOptions stop;
+    stop.replanRolling = false;
+    Navigator stopNav(hall(), robot, stop);
+    const NavigationResult stopped = stopNav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, sc);
+    ASSERT_EQ(rolling.outcome, NavigationResult::Outcome::Reached) << rolling.reason;
+    ASSERT_EQ(stopped.outcome, NavigationResult::Outcome::Reached) << stopped.reason;
+    EXPECT_GE(rolling.rollingReplans, 1);
+    EXPECT_EQ(stopped.rollingReplans, 0);
+    EXPECT_GT(worstClearance(rolling, rollingNav.worldChecker(), sc), 0.0);
+    // no standstill between the first metre and the last one
+    double slowest = 1e9;
+    for (const TrajectorySample &t : rolling.trajectory)
+        if (t.x > 4.0 && std::hypot(t.x - 37.0, t.y - 6.0) > 1.0) slowest = std::min(slowest, t.v);
+    EXPECT_GT(slowest, 0.05);
+    EXPECT_LT(rolling.drivingTime, stopped.drivingTime);
 }
 
 // A goal the pallet stands on: reported as blocked, with the nearest pose the planner reached.

@@ -1,5 +1,5 @@
 // gridcar navigate: plan, drive with paper C's follower while a range sensor watches the true
-// world, and replan from where the vehicle stands when the path ahead is blocked (Navigator).
+// world, and replan from where the vehicle is (rolling on) when the path ahead is blocked (Navigator).
 #include "Cli.h"
 
 #include "gridcar/bench/Figure.h"
@@ -24,6 +24,7 @@ struct NavigateOptions
     std::string scenario, world;
     RangeSensorParams sensor;
     int maxReplans{30};
+    bool stopToReplan{false};
     bool json{false};
     std::string png, trajectoryCsv;
 };
@@ -108,6 +109,7 @@ int runNavigate(const NavigateOptions &o)
     no.goalTolerance = query.goalTolerance;
     no.sensor = o.sensor;
     no.maxReplans = o.maxReplans;
+    no.replanRolling = !o.stopToReplan;
     Navigator nav(query.grid, query.vehicle, no, world);
     const NavigationResult r = nav.run(query.start, query.goal, !query.goalYaw, sc);
     std::vector<double> replans = r.replanSeconds;
@@ -120,6 +122,7 @@ int runNavigate(const NavigateOptions &o)
                          {"distance_driven", r.distanceDriven},
                          {"min_clearance", r.minClearance},
                          {"replans", r.replans},
+                         {"rolling_replans", r.rollingReplans},
                          {"stalls", r.stalls},
                          {"retreats", r.retreats},
                          {"replan_seconds", r.replanSeconds},
@@ -131,10 +134,11 @@ int runNavigate(const NavigateOptions &o)
     }
     else
     {
-        std::printf("%s: %s; %.2f s of driving, %.1f m driven, min clearance %.2f m; %d replans (update + search median %.1f ms, "
-                    "max %.1f ms), %d retreats, %zu cells seen that the map did not show\n",
+        std::printf("%s: %s; %.2f s of driving, %.1f m driven, min clearance %.2f m; %d replans (%d driven on into while rolling; "
+                    "update + search median %.1f ms, max %.1f ms), %d retreats, %zu cells seen that the map did not show\n",
                     NavigationResult::outcomeName(r.outcome).c_str(), r.reason.c_str(), r.drivingTime, r.distanceDriven,
-                    std::isfinite(r.minClearance) ? r.minClearance : 0.0, r.replans, 1e3 * med, 1e3 * worst, r.retreats, r.sensedCells);
+                    std::isfinite(r.minClearance) ? r.minClearance : 0.0, r.replans, r.rollingReplans, 1e3 * med, 1e3 * worst,
+                    r.retreats, r.sensedCells);
         if (r.hasNearestReachable) std::printf("nearest reachable pose: %s\n", describe(r.nearestReachable).c_str());
     }
     if (!o.trajectoryCsv.empty()) writeTrajectoryCsv(o.trajectoryCsv, r.trajectory);
@@ -148,7 +152,8 @@ Command addNavigateCommand(CLI::App &app)
     auto o = std::make_shared<NavigateOptions>();
     auto *c = app.add_subcommand("navigate", "Plan, drive with paper C's follower while a simulated range sensor watches the "
                                              "true world (the map plus --scenario's obstacles), and replan from where the "
-                                             "vehicle stands when an obstacle the map did not show blocks the path ahead");
+                                             "vehicle is when an obstacle the map did not show blocks the path ahead (it "
+                                             "drives on into the new path where that starts in its gear, else stops first)");
     addQueryOptions(c, o->query, false);
     c->add_option("--scenario", o->scenario,
                   "The obstacles the map does not show (YAML: obstacles: [{shape, radius | size, waypoints, speed, start_time, "
@@ -158,9 +163,13 @@ Command addNavigateCommand(CLI::App &app)
     c->add_option("--beams", o->sensor.beams, "Beams of the sensor over 360 degrees")->capture_default_str();
     c->add_option("--scan-period", o->sensor.period, "Time between scans, s")->capture_default_str();
     c->add_option("--max-replans", o->maxReplans, "Replans before the run ends as stuck")->capture_default_str();
+    c->add_flag("--stop-to-replan", o->stopToReplan,
+                "Brake to a standstill before every replan (by default the vehicle plans while it rolls and drives on into the "
+                "new path when that starts in its gear, is longer than its stopping distance and has no bend that asks it to "
+                "brake hard at once)");
     c->add_flag("--json", o->json,
                 "Print one JSON object: outcome (reached | goal blocked | no path | collided | stuck | timeout), reason, "
-                "driving_time, distance_driven, min_clearance, replans, stalls, retreats (backing up along the track where no plan "
+                "driving_time, distance_driven, min_clearance, replans, rolling_replans (driven on into without stopping), stalls, retreats (backing up along the track where no plan "
                 "started), replan_seconds (each: the map updates "
                 "since the last plan + the search), sensed_cells, final_pose, nearest_reachable (a blocked goal)");
     c->add_option("--png", o->png, "Picture (axes in metres, legend): the first plan (blue), the last (green), the drive (red, "

@@ -2,6 +2,8 @@
 #include "gridcar/query/Navigate.h"
 
 #include "gridcar/core/Angles.h"
+#include "gridcar/core/Cusps.h"
+#include "gridcar/vehicle/Dynamics.h"
 
 #include <algorithm>
 #include <chrono>
@@ -33,6 +35,7 @@ struct Navigator::Impl
     GridSetup setup;
     ompl::base::PlannerPtr planner;
     NavigationOptions options;
+    VehicleState car;  ///< the vehicle's state in the true world (its body's pose, speed, steering)
 
     Impl(const std::shared_ptr<const OccupancyGrid> &map, const VehicleParams &vehicle, const NavigationOptions &o,
          std::shared_ptr<const OccupancyGrid> truth)
@@ -62,12 +65,21 @@ struct Navigator::Impl
     /// Backs the vehicle up along the track driven (retreatPath()); false when there is no room.
     bool retreat(const Scenario &sc, NavigationResult &res, double &t, Pose2 &at);
 
+    /// Brakes the vehicle rolling in state @p s to a standstill along @p path from pose @p from
+    /// on (or straight on where the path has no more in its gear).
+    DriveResult brake(const std::vector<Pose2> &path, std::size_t from, const VehicleState &s, const Scenario &sc,
+                      NavigationResult &res, double &t, Pose2 &at);
+
     /// Drives @p path in the true world from time @p t on; the trajectory, time, distance and
     /// clearance added to @p res, @p t and @p at moved to where the car stopped.
-    DriveResult drive(const std::vector<Pose2> &path, const FollowerParams &fp, const Scenario &sc, NavigationResult &res,
+    DriveResult drive(const std::vector<Pose2> &path, const FollowerParams &fpIn, const Scenario &sc, NavigationResult &res,
                       double &t, Pose2 &at)
     {
+        // the car goes on as it stands or rolls: its heading and steering, not the path's
+        FollowerParams fp = fpIn;
+        if (!fp.startState) fp.startState = car;
         const DriveResult d = drivePath(path, *worldChecker, sc, fp);
+        car = d.finalState;
         res.trajectory.insert(res.trajectory.end(), d.trajectory.begin(), d.trajectory.end());
         t += d.drivingTime;
         res.drivingTime = t;
@@ -123,6 +135,26 @@ std::vector<Pose2> retreatPath(const std::vector<TrajectorySample> &track, const
     return out;
 }
 
+/// A path the vehicle rolling in state @p s can drive on into without stopping: its first piece
+/// in the gear it rolls in, longer than its stopping distance and a half metre, with no curve so
+/// near that the car must brake below 70 % of its speed to take it (the profile from its speed).
+bool canDriveOn(const std::vector<Pose2> &path, const VehicleState &s, const VehicleParams &vehicle)
+{
+    const std::vector<PathPiece> pieces = splitAtCusps(path);
+    if (pieces.empty() || pieces.front().backward != (s.v < 0)) return false;
+    const double speed = std::abs(s.v);
+    const std::vector<Pose2> &first = pieces.front().poses;
+    double length = 0.0;
+    for (std::size_t i = 1; i < first.size(); ++i) length += std::hypot(first[i].x - first[i - 1].x, first[i].y - first[i - 1].y);
+    if (length < speed * speed / (2.0 * vehicle.deceleration) + 0.5) return false;
+    VehicleParams v = vehicle;
+    if (pieces.front().backward) v.maxSpeed = reverseSpeedLimit(vehicle);
+    DrivingTimeParams dp;
+    dp.startSpeed = speed;
+    const VelocityProfile profile = velocityProfile(first, v, dp);
+    return !profile.v.empty() && profile.v.front() >= 0.7 * speed;
+}
+
 /// Within the tolerance of the goal: the position within the larger of the tolerance and the
 /// follower's (the path ends within the one, the car within the other of the path's end), the
 /// heading within its tolerance.
@@ -146,6 +178,34 @@ bool Navigator::Impl::retreat(const Scenario &sc, NavigationResult &res, double 
     return true;
 }
 
+DriveResult Navigator::Impl::brake(const std::vector<Pose2> &path, std::size_t from, const VehicleState &s, const Scenario &sc,
+                                   NavigationResult &res, double &t, Pose2 &at)
+{
+    const bool backward = s.v < 0;
+    std::vector<Pose2> along;
+    if (from < path.size())
+    {
+        const std::vector<PathPiece> pieces = splitAtCusps(std::vector<Pose2>(path.begin() + std::ptrdiff_t(from), path.end()));
+        if (!pieces.empty() && pieces.front().backward == backward) along = pieces.front().poses;
+    }
+    // the stopping distance and a metre: a piece that ends sooner is carried on straight
+    const double need = s.v * s.v / (2.0 * setup.checker->vehicle().deceleration) + 1.0;
+    double length = 0.0;
+    for (std::size_t i = 1; i < along.size(); ++i) length += std::hypot(along[i].x - along[i - 1].x, along[i].y - along[i - 1].y);
+    if (along.empty()) along.push_back({s.x, s.y, s.yaw});
+    if (length < need)
+    {
+        const Pose2 e = along.back();
+        const double sign = backward ? -1.0 : 1.0, go = need - length;
+        along.push_back({e.x + sign * go * std::cos(e.yaw), e.y + sign * go * std::sin(e.yaw), e.yaw});
+    }
+    FollowerParams fp = options.follower;
+    fp.startTime = t;
+    fp.startState = s;
+    fp.interrupt = [](const VehicleState &, double) { return true; };
+    return drive(along, fp, sc, res, t, at);
+}
+
 Navigator::Navigator(std::shared_ptr<const OccupancyGrid> map, const VehicleParams &vehicle, const NavigationOptions &options,
                      std::shared_ptr<const OccupancyGrid> world)
 {
@@ -166,7 +226,8 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
     Pose2 at = start;
     double t = 0.0, pendingUpdate = 0.0;
     res.finalPose = start;
-    std::size_t updatesSeen = 0;
+    m.car = VehicleState{start.x, start.y, start.yaw, 0.0, 0.0};
+    std::size_t updatesSeen = 0, ahead = 0;
     m.sense(scenario, t, at.x, at.y, res);
     auto finish = [&](NavigationResult::Outcome o, std::string why) {
         res.outcome = o;
@@ -191,6 +252,19 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
         const QueryResult q = runQuery(m.setup, m.planner, at, goal, m.options.planTimeLimit, freeGoalHeading, planTol);
         if (!res.plans.empty()) res.replanSeconds.push_back(pendingUpdate + q.seconds);
         pendingUpdate = 0.0;
+        if (std::abs(m.car.v) > 1e-9)  // planned while rolling
+        {
+            const bool driveOn = q.status == ompl::base::PlannerStatus::EXACT_SOLUTION && canDriveOn(q.path, m.car, work.vehicle());
+            if (!driveOn)  // a stop first (a gear change, a bend too near, no plan from here): then plan again
+            {
+                const DriveResult b = m.brake(res.plans.back(), ahead, m.car, scenario, res, t, at);
+                if (b.outcome == DriveResult::Outcome::Collided) return finish(NavigationResult::Outcome::Collided, b.reason);
+                m.sense(scenario, t, at.x, at.y, res);
+                ++res.replans;
+                continue;
+            }
+            ++res.rollingReplans;
+        }
         if (q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
         {
             // the goal in or beside what the map did not show: seen from its sides, an obstacle
@@ -214,10 +288,11 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
             return finish(NavigationResult::Outcome::Stuck, "replanned " + std::to_string(res.replans) + " times");
         res.plans.push_back(q.path);
         const std::vector<Pose2> &path = res.plans.back();
-        std::size_t ahead = 0;
+        ahead = 0;
         double lastScan = t;
         FollowerParams fp = m.options.follower;
         fp.startTime = t;
+        fp.interruptRolling = m.options.replanRolling;
         fp.goalTolerance = followTol;
         if (tol.yaw > 0 && !freeGoalHeading) fp.goalYawTolerance = tol.yaw / 2;
         fp.interrupt = [&](const VehicleState &s, double now) {
@@ -243,7 +318,7 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
                     return finish(NavigationResult::Outcome::Stuck, d.reason + " (" + std::to_string(res.stalls) + " stalls)");
                 m.sense(scenario, t, at.x, at.y, res);
                 break;
-            default: break;  // interrupted: the path ahead is blocked in the working map
+            default: break;  // interrupted: the path ahead is blocked in the working map (rolling or at a standstill)
         }
         ++res.replans;
     }

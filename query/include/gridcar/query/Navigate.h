@@ -32,6 +32,11 @@ struct NavigationOptions
     FollowerParams follower;        ///< its startTime and interrupt are the navigator's
     int maxReplans{30};             ///< replans before the run ends as Stuck
     int maxStalls{3};               ///< drives ending stuck (each followed by a replan) before it ends as Stuck; retreats as many
+    /// Replan while rolling: when the path ahead becomes blocked, plan at once from where the
+    /// vehicle is, and when the new path starts in the gear it rolls in, drive on into it without
+    /// stopping; otherwise (or with no plan) brake to a standstill along the old path and plan
+    /// again from there. false: always brake to a standstill first, then plan.
+    bool replanRolling{true};
 };
 
 /// How a navigation ended and what it measured.
@@ -47,6 +52,8 @@ struct NavigationResult
     /// Times no plan started from where the vehicle stood and it backed up along its track
     /// (two vehicle lengths and a metre, as far as the working map is free) to plan again
     int retreats{0};
+    /// Replans made while rolling that the vehicle drove on into without stopping
+    int rollingReplans{0};
     std::vector<double> replanSeconds;       ///< wall time of each replan: the map updates since the last plan + solve()
     std::vector<double> updateSeconds;       ///< wall time of each working-map update (distance field + checker)
     std::vector<std::vector<Pose2>> plans;   ///< every path planned, in order
@@ -68,9 +75,11 @@ struct NavigationResult
  * update the working map's distance field and footprint checker in place
  * (DistanceField::update(), FootprintChecker::cellsChanged()), so the planner kept between plans
  * pays a search, not a set-up. When the path ahead of the vehicle (from its projection on, every
- * pose at its own heading) collides in the working map, the car brakes to a standstill and the
- * planner plans again from its pose; a drive that ends stuck (the follower's recoveries spent)
- * is replanned too. Obstacles moving faster than RangeSensorParams::stationarySpeed are left
+ * pose at its own heading) collides in the working map, the planner plans again from the pose
+ * the vehicle rolls through (NavigationOptions::replanRolling) and the vehicle drives on into the
+ * new path at its speed when that path starts in its gear; otherwise it brakes to a standstill
+ * along the old path and plans again from there (the planning itself takes no simulated time);
+ * a drive that ends stuck (the follower's recoveries spent) is replanned too. Obstacles moving faster than RangeSensorParams::stationarySpeed are left
  * to the follower's potential field (paper C: robustness to dynamic obstacles), as a driver
  * waits for a pedestrian to cross. A plan that fails where the goal's pose collides in the
  * working map, or where the sensor added cells within 1.5 m of the body's reach round the goal
