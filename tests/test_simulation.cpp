@@ -7,6 +7,7 @@
 #include "gridcar/map/MapIO.h"
 #include "gridcar/vehicle/Dynamics.h"
 #include "gridcar/planners/PlannerFactory.h"
+#include "SimTestUtil.h"
 #include "TestData.h"
 
 #include <gtest/gtest.h>
@@ -16,30 +17,8 @@
 #include <fstream>
 
 using namespace gridcar;
-
-namespace
-{
-/// A straight road along x: width w metres, length len metres, 0.25 m cells, curbs top and bottom.
-GridSetup road(double len, double w, const std::string &vehicle = "paper-c-robot")
-{
-    const double res = 0.25;
-    const int W = int(len / res), H = int((w + 2.0) / res);
-    auto g = std::make_shared<OccupancyGrid>(W, H, res);
-    for (int c = 0; c < W; ++c)
-    {
-        g->set(c, 0, CellState::Occupied);
-        g->set(c, H - 1, CellState::Occupied);
-    }
-    return makeGridSetup(g, VehicleParams::preset(vehicle));
-}
-
-std::vector<Pose2> straight(double x0, double x1, double y, double step = 0.25)
-{
-    std::vector<Pose2> p;
-    for (double x = x0; x <= x1 + 1e-9; x += step) p.push_back({x, y, 0.0});
-    return p;
-}
-}  // namespace
+using gridcar::test::road;
+using gridcar::test::straight;
 
 // What `driving_time_profile` (drivingTime()) and the simulation each count: the profile is the
 // path at the vehicle's limits; the follower drives it so where no obstacle is within rho0 of the
@@ -293,34 +272,6 @@ TEST(Simulation, APathThatCirclesIsDrivenRoundItsCircleNotAcrossIt)
         }
 }
 
-// The navigation loop's hook: asked before every step, true stops the run; the car brakes to a
-// standstill on its course and the run ends as Interrupted, the scenario's clock going on from
-// startTime.
-TEST(Simulation, AnInterruptStopsTheCarWhereItStandsAndTheClockGoesOn)
-{
-    GridSetup s = road(60.0, 4.0);
-    const double y = s.grid->cellCenterY(s.grid->height() / 2);
-    const auto path = straight(5.0, 55.0, y);
-    FollowerParams fp;
-    fp.startTime = 7.0;
-    int asked = 0;
-    fp.interrupt = [&](const VehicleState &st, double t) {
-        ++asked;
-        EXPECT_GE(t, 7.0);
-        return st.x > 20.0;
-    };
-    const DriveResult r = drivePath(path, *s.checker, Scenario(), fp);
-    ASSERT_EQ(r.outcome, DriveResult::Outcome::Interrupted) << r.reason;
-    EXPECT_GT(asked, 10);
-    EXPECT_NEAR(r.finalState.v, 0.0, 1e-9);
-    EXPECT_GT(r.finalState.x, 20.0);
-    EXPECT_LT(r.finalState.x, 30.0);
-    EXPECT_NEAR(r.finalState.y, y, 0.2);
-    ASSERT_FALSE(r.trajectory.empty());
-    EXPECT_NEAR(r.trajectory.back().t - 7.0, r.drivingTime, 1e-9);
-    EXPECT_NEAR(r.trajectory.back().x, r.finalState.x, 1e-9);
-}
-
 // A heading tolerance at the goal: a path whose last pose turns 90 degrees on the spot (no car
 // can) ends Stuck with the heading named; without the tolerance it ends Reached as before.
 TEST(Simulation, AGoalHeadingToleranceIsChecked)
@@ -358,38 +309,4 @@ TEST(Simulation, AStandingBoxBesideTheRoadIsDrivenPast)
     ASSERT_EQ(r.outcome, DriveResult::Outcome::Reached) << r.reason;
     EXPECT_GT(r.minClearance, 0.3);
     EXPECT_LT(r.crossTrackMax, 0.5);
-}
-
-// A run that goes on from an earlier one, rolling (a navigation loop's replan): it starts at the
-// speed and steering it is given, drives on without braking to a standstill and so takes less
-// time than from rest; an interrupt with interruptRolling ends it at once, still rolling; a
-// rolling start into a piece of the other gear is refused.
-TEST(Simulation, ARollingStartDrivesOnAtItsSpeed)
-{
-    GridSetup s = road(60.0, 4.0);
-    const double y = s.grid->cellCenterY(s.grid->height() / 2);
-    const auto path = straight(5.0, 45.0, y);
-    const double v0 = 0.8 * s.checker->vehicle().maxSpeed;
-    const DriveResult fromRest = drivePath(path, *s.checker, Scenario());
-    ASSERT_EQ(fromRest.outcome, DriveResult::Outcome::Reached) << fromRest.reason;
-    FollowerParams fp;
-    fp.startState = VehicleState{5.0, y, 0.0, v0, 0.0};
-    const DriveResult rolling = drivePath(path, *s.checker, Scenario(), fp);
-    ASSERT_EQ(rolling.outcome, DriveResult::Outcome::Reached) << rolling.reason;
-    ASSERT_GT(rolling.trajectory.size(), 20u);
-    double slowest = 1e9;
-    for (std::size_t i = 0; i < 20; ++i) slowest = std::min(slowest, rolling.trajectory[i].v);
-    EXPECT_GT(slowest, 0.9 * v0);
-    EXPECT_LT(rolling.drivingTime, fromRest.drivingTime - 0.3 * v0 / s.checker->vehicle().acceleration);
-
-    fp.interruptRolling = true;
-    fp.interrupt = [](const VehicleState &st, double) { return st.x > 20.0; };
-    const DriveResult cut = drivePath(path, *s.checker, Scenario(), fp);
-    ASSERT_EQ(cut.outcome, DriveResult::Outcome::Interrupted) << cut.reason;
-    EXPECT_GT(cut.finalState.v, 0.5 * v0);
-    EXPECT_NEAR(cut.finalState.x, 20.0, 0.2);
-
-    fp.interrupt = nullptr;
-    fp.startState = VehicleState{5.0, y, 0.0, -0.3, 0.0};  // rolling backwards into a forward path
-    EXPECT_THROW(drivePath(path, *s.checker, Scenario(), fp), std::invalid_argument);
 }

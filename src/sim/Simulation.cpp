@@ -139,7 +139,8 @@ struct DriveRun
             res.crossTrackMax = std::max(res.crossTrackMax, crossTrack);
             ++steps;
             // interrupted: brake to a standstill, still steering along the path (a car braking
-            // from speed with its wheels held leaves a curved road)
+            // from speed with its wheels held leaves a curved road), or with interruptRolling
+            // end the run at once, rolling
             if (!stopping && prm.interrupt && prm.interrupt(backward ? turnedRound(st) : st, t))
             {
                 if (prm.interruptRolling) return interrupted(follower, st);
@@ -217,7 +218,8 @@ struct DriveRun
         }
     }
 
-    /// The run interrupted, the car at a standstill: false (res says Interrupted).
+    /// The run interrupted, the car at a standstill (or rolling, with interruptRolling): false
+    /// (res says Interrupted).
     bool interrupted(const detail::Follower &follower, const VehicleState &st)
     {
         res.outcome = DriveResult::Outcome::Interrupted;
@@ -255,7 +257,11 @@ struct DriveRun
         manoeuvring = true;
         const bool ok = piece(backPath, other, b, !backward, false);
         manoeuvring = false;
-        if (!ok && res.outcome != DriveResult::Outcome::Stuck) return false;
+        if (!ok && res.outcome != DriveResult::Outcome::Stuck)
+        {
+            st = turnedRound(b);  // the run ends where the back-up got to (rolling, if interrupted)
+            return false;
+        }
         res.outcome = outcome, res.reason = reason, res.recoveries = recoveries;
         st = turnedRound(b);
         follower.rewind(std::max(0.0, s0 - back - 0.5), t, s0 + 1.0, follower.crawl());
@@ -302,7 +308,10 @@ DriveResult drivePath(const std::vector<Pose2> &pathIn, const FootprintChecker &
     {
         res.outcome = DriveResult::Outcome::Reached;
         res.reason = "the path has no length";
-        if (!pathIn.empty()) res.finalState = {pathIn.front().x, pathIn.front().y, pathIn.front().yaw, 0.0, 0.0};
+        if (prm.startState)
+            res.finalState = *prm.startState;  // nothing to drive: where it is (a rolling car is the caller's to brake)
+        else if (!pathIn.empty())
+            res.finalState = {pathIn.front().x, pathIn.front().y, pathIn.front().yaw, 0.0, 0.0};
         return res;
     }
     std::unique_ptr<FootprintChecker> reverseChecker;  // the mirrored vehicle, when a piece reverses or backs up

@@ -104,7 +104,11 @@ double drivingTime(const std::vector<Pose2> &path, const VehicleParams &v, const
     double t = 0.0;
     VehicleParams back = v;  // a piece driven backwards: at most the reverse speed limit
     back.maxSpeed = reverseSpeedLimit(v);
-    for (const PathPiece &piece : splitAtCusps(path)) t += velocityProfile(piece.poses, piece.backward ? back : v, one).time;
+    for (const PathPiece &piece : splitAtCusps(path))
+    {
+        t += velocityProfile(piece.poses, piece.backward ? back : v, one).time;
+        one.startSpeed = 0.0;  // the pieces after a cusp start from rest
+    }
     return t;
 }
 
