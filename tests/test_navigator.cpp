@@ -86,16 +86,19 @@ TEST(Navigator, AnUnmappedObstacleAcrossTheRouteIsSeenAndDrivenRound)
     EXPECT_LT(std::hypot(r.finalPose.x - 37.0, r.finalPose.y - 6.0), 0.35);
 }
 
-// Replanning while rolling: the pallet seen ahead, the new plan starts where the robot rolls and
-// it drives on into it; the same run braking to a standstill before every replan takes longer.
+// Replanning while rolling: the pallet seen ahead, the robot rolls on along its old path while
+// the plan is made (a fixed latency here, for a repeatable run) and drives on into the new path;
+// the same run braking to a standstill before every replan takes longer.
 TEST(Navigator, AReplanWhileRollingDrivesOnWithoutStopping)
 {
     Scenario sc;
     sc.obstacles.push_back(standingBox(20.0, 5.0, 1.0, 8.0));
     const VehicleParams robot = VehicleParams::preset("paper-c-robot");
-    Navigator rollingNav(hall(), robot);
+    NavigationOptions roll;
+    roll.planLatency = 0.3;
+    Navigator rollingNav(hall(), robot, roll);
     const NavigationResult rolling = rollingNav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, sc);
-    NavigationOptions stop;
+    NavigationOptions stop = roll;
     stop.replanRolling = false;
     Navigator stopNav(hall(), robot, stop);
     const NavigationResult stopped = stopNav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, sc);
@@ -103,12 +106,22 @@ TEST(Navigator, AReplanWhileRollingDrivesOnWithoutStopping)
     ASSERT_EQ(stopped.outcome, NavigationResult::Outcome::Reached) << stopped.reason;
     EXPECT_GE(rolling.rollingReplans, 1);
     EXPECT_EQ(stopped.rollingReplans, 0);
+    EXPECT_EQ(rolling.replanSeconds.size(), std::size_t(rolling.replans));
+    EXPECT_EQ(stopped.replanSeconds.size(), std::size_t(stopped.replans));
     EXPECT_GT(worstClearance(rolling, rollingNav.worldChecker(), sc), 0.0);
-    // no standstill between the first metre and the last one
-    double slowest = 1e9;
-    for (const TrajectorySample &t : rolling.trajectory)
-        if (t.x > 4.0 && std::hypot(t.x - 37.0, t.y - 6.0) > 1.0) slowest = std::min(slowest, t.v);
-    EXPECT_GT(slowest, 0.05);
+    // fewer standstills on the way (the stopping run stands for every replan)
+    const auto standstills = [](const NavigationResult &r) {
+        int n = 0;
+        bool moving = false;
+        for (const TrajectorySample &t : r.trajectory)
+        {
+            if (moving && std::abs(t.v) < 0.01) ++n;
+            moving = std::abs(t.v) >= 0.01;
+        }
+        return n;
+    };
+    EXPECT_GE(standstills(stopped), stopped.replans);
+    EXPECT_LT(standstills(rolling), standstills(stopped)) << rolling.replans << " replans, " << rolling.rollingReplans << " rolling, " << standstills(stopped) << " standstills stopping";
     EXPECT_LT(rolling.drivingTime, stopped.drivingTime);
 }
 

@@ -153,7 +153,8 @@ Command addNavigateCommand(CLI::App &app)
     auto *c = app.add_subcommand("navigate", "Plan, drive with paper C's follower while a simulated range sensor watches the "
                                              "true world (the map plus --scenario's obstacles), and replan from where the "
                                              "vehicle is when an obstacle the map did not show blocks the path ahead (it "
-                                             "drives on into the new path where that starts in its gear, else stops first)");
+                                             "rolls on along the old path while the plan is made, then drives on into the new "
+                                             "path where that lets it, else stops first)");
     addQueryOptions(c, o->query, false);
     c->add_option("--scenario", o->scenario,
                   "The obstacles the map does not show (YAML: obstacles: [{shape, radius | size, waypoints, speed, start_time, "
@@ -164,9 +165,10 @@ Command addNavigateCommand(CLI::App &app)
     c->add_option("--scan-period", o->sensor.period, "Time between scans, s")->capture_default_str();
     c->add_option("--max-replans", o->maxReplans, "Replans before the run ends as stuck")->capture_default_str();
     c->add_flag("--stop-to-replan", o->stopToReplan,
-                "Brake to a standstill before every replan (by default the vehicle plans while it rolls and drives on into the "
-                "new path when that starts in its gear, is longer than its stopping distance and has no bend that asks it to "
-                "brake hard at once)");
+                "Brake to a standstill before every replan and wait for the plan (by default the vehicle rolls on along its "
+                "old path while the plan is made and then drives on into the new path when that passes where it has got to, "
+                "in its gear, longer than its stopping distance, with no bend that asks it to brake hard or to turn its wheels "
+                "faster than they can)");
     c->add_flag("--json", o->json,
                 "Print one JSON object: outcome (reached | goal blocked | no path | collided | stuck | timeout), reason, "
                 "driving_time, distance_driven, min_clearance, replans, rolling_replans (driven on into without stopping), stalls, retreats (backing up along the track where no plan "

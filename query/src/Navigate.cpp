@@ -1,9 +1,10 @@
 // The navigation loop: plan, drive, sense, update the working map in place, replan.
 #include "gridcar/query/Navigate.h"
 
+#include "NavigatePaths.h"
+
 #include "gridcar/core/Angles.h"
 #include "gridcar/core/Cusps.h"
-#include "gridcar/vehicle/Dynamics.h"
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +26,12 @@ std::string NavigationResult::outcomeName(Outcome o)
     }
 }
 
+namespace
+{
+/// m/s: a car slower than this at the end of a drive stands (a step's least advance, 1 mm, at the end)
+constexpr double kStanding = 0.02;
+}  // namespace
+
 struct Navigator::Impl
 {
     std::shared_ptr<const OccupancyGrid> world;
@@ -36,6 +43,7 @@ struct Navigator::Impl
     ompl::base::PlannerPtr planner;
     NavigationOptions options;
     VehicleState car;  ///< the vehicle's state in the true world (its body's pose, speed, steering)
+    std::size_t blockedAt{0};  ///< the first pose of the last plan found blocked in the working map
 
     Impl(const std::shared_ptr<const OccupancyGrid> &map, const VehicleParams &vehicle, const NavigationOptions &o,
          std::shared_ptr<const OccupancyGrid> truth)
@@ -65,10 +73,19 @@ struct Navigator::Impl
     /// Backs the vehicle up along the track driven (retreatPath()); false when there is no room.
     bool retreat(const Scenario &sc, NavigationResult &res, double &t, Pose2 &at);
 
-    /// Brakes the vehicle rolling in state @p s to a standstill along @p path from pose @p from
-    /// on (or straight on where the path has no more in its gear).
-    DriveResult brake(const std::vector<Pose2> &path, std::size_t from, const VehicleState &s, const Scenario &sc,
-                      NavigationResult &res, double &t, Pose2 &at);
+    enum class Handover { DriveOn, PlanAgain, Collided, CouldNotBrake };
+    /// After plan @p q made while rolling (from pose @p ahead of the last plan on): the car rolls
+    /// on along the last plan for @p latency s; then DriveOn with @p q's path cut to start where
+    /// the car joins it, or it brakes to a standstill there (PlanAgain; Collided or
+    /// CouldNotBrake with @p why).
+    Handover handOver(QueryResult &q, double latency, std::size_t ahead, const Scenario &sc, NavigationResult &res, double &t,
+                      Pose2 &at, std::string &why);
+
+    /// The vehicle, rolling, goes on along @p path from pose @p from on (or straight on where the
+    /// path has no more in its gear), scanning: for @p rollFor seconds and then still rolling, or
+    /// (rollFor < 0) braking to a standstill at once.
+    DriveResult goOn(const std::vector<Pose2> &path, std::size_t from, double rollFor, const Scenario &sc, NavigationResult &res,
+                     double &t, Pose2 &at);
 
     /// Drives @p path in the true world from time @p t on; the trajectory, time, distance and
     /// clearance added to @p res, @p t and @p at moved to where the car stopped.
@@ -77,9 +94,11 @@ struct Navigator::Impl
     {
         // the car goes on as it stands or rolls: its heading and steering, not the path's
         FollowerParams fp = fpIn;
-        if (!fp.startState) fp.startState = car;
+        fp.startState = car;
         const DriveResult d = drivePath(path, *worldChecker, sc, fp);
         car = d.finalState;
+        // a run that ends at the goal creeps its last millimetre (a step's least advance): the car stands
+        if (std::abs(car.v) < kStanding) car.v = 0.0;
         res.trajectory.insert(res.trajectory.end(), d.trajectory.begin(), d.trajectory.end());
         t += d.drivingTime;
         res.drivingTime = t;
@@ -98,62 +117,10 @@ namespace
 constexpr double kGoalNear = 1.5;
 /// A retreat backs up this many vehicle lengths plus a metre along the track driven.
 constexpr double kRetreat = 2.0;
-
-/// Index of the path pose nearest (x, y), searched from @p from on over the next 10 m.
-std::size_t nearestAhead(const std::vector<Pose2> &path, std::size_t from, double x, double y)
-{
-    std::size_t best = from;
-    double bestD = std::hypot(path[from].x - x, path[from].y - y), along = 0.0;
-    for (std::size_t i = from + 1; i < path.size() && along <= 10.0; ++i)
-    {
-        along += std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
-        const double d = std::hypot(path[i].x - x, path[i].y - y);
-        if (d < bestD) best = i, bestD = d;
-    }
-    return best;
-}
-
-/// The way back along the track driven (the trajectory's poses from its end, 5 cm apart at
-/// the least), as long as the body is free in the working map at each pose, up to @p length m:
-/// a path that retraces the drive in the other gear.
-std::vector<Pose2> retreatPath(const std::vector<TrajectorySample> &track, const FootprintChecker &work, double length)
-{
-    std::vector<Pose2> out;
-    double along = 0.0;
-    for (std::size_t i = track.size(); i-- > 0 && along < length;)
-    {
-        const Pose2 p{track[i].x, track[i].y, track[i].yaw};
-        if (!work.isValid(p)) break;
-        if (!out.empty())
-        {
-            const double d = std::hypot(p.x - out.back().x, p.y - out.back().y);
-            if (d < 0.05) continue;
-            along += d;
-        }
-        out.push_back(p);
-    }
-    return out;
-}
-
-/// A path the vehicle rolling in state @p s can drive on into without stopping: its first piece
-/// in the gear it rolls in, longer than its stopping distance and a half metre, with no curve so
-/// near that the car must brake below 70 % of its speed to take it (the profile from its speed).
-bool canDriveOn(const std::vector<Pose2> &path, const VehicleState &s, const VehicleParams &vehicle)
-{
-    const std::vector<PathPiece> pieces = splitAtCusps(path);
-    if (pieces.empty() || pieces.front().backward != (s.v < 0)) return false;
-    const double speed = std::abs(s.v);
-    const std::vector<Pose2> &first = pieces.front().poses;
-    double length = 0.0;
-    for (std::size_t i = 1; i < first.size(); ++i) length += std::hypot(first[i].x - first[i - 1].x, first[i].y - first[i - 1].y);
-    if (length < speed * speed / (2.0 * vehicle.deceleration) + 0.5) return false;
-    VehicleParams v = vehicle;
-    if (pieces.front().backward) v.maxSpeed = reverseSpeedLimit(vehicle);
-    DrivingTimeParams dp;
-    dp.startSpeed = speed;
-    const VelocityProfile profile = velocityProfile(first, v, dp);
-    return !profile.v.empty() && profile.v.front() >= 0.7 * speed;
-}
+using detail::canDriveOn;
+using detail::joinAt;
+using detail::nearestAhead;
+using detail::retreatPath;
 
 /// Within the tolerance of the goal: the position within the larger of the tolerance and the
 /// follower's (the path ends within the one, the car within the other of the path's end), the
@@ -178,22 +145,34 @@ bool Navigator::Impl::retreat(const Scenario &sc, NavigationResult &res, double 
     return true;
 }
 
-DriveResult Navigator::Impl::brake(const std::vector<Pose2> &path, std::size_t from, const VehicleState &s, const Scenario &sc,
-                                   NavigationResult &res, double &t, Pose2 &at)
+DriveResult Navigator::Impl::goOn(const std::vector<Pose2> &path, std::size_t from, double rollFor, const Scenario &sc,
+                                  NavigationResult &res, double &t, Pose2 &at)
 {
+    const VehicleState s = car;
     const bool backward = s.v < 0;
+    const double stopping = s.v * s.v / (2.0 * setup.checker->vehicle().deceleration);
     std::vector<Pose2> along;
-    if (from < path.size())
+    // where the car is on the path now (it may have rolled on since @p from was found)
+    if (from < path.size()) from = nearestAhead(path, from, s.x, s.y, 60.0);
+    // rolling on: along the path up to a metre short of where it is blocked (its profile stops
+    // there); with less room than it needs to stop, it brakes at once
+    std::size_t to = std::min(path.size(), std::max(blockedAt, from));
+    for (double back = 0.0; rollFor >= 0 && to > from + 1 && back < 1.0; --to)
+        back += std::hypot(path[to - 1].x - path[to - 2].x, path[to - 1].y - path[to - 2].y);
+    if (rollFor < 0) to = path.size();
+    if (from + 1 < to)
     {
-        const std::vector<PathPiece> pieces = splitAtCusps(std::vector<Pose2>(path.begin() + std::ptrdiff_t(from), path.end()));
+        const std::vector<PathPiece> pieces =
+            splitAtCusps(std::vector<Pose2>(path.begin() + std::ptrdiff_t(from), path.begin() + std::ptrdiff_t(to)));
         if (!pieces.empty() && pieces.front().backward == backward) along = pieces.front().poses;
     }
-    // the stopping distance and a metre: a piece that ends sooner is carried on straight
-    const double need = s.v * s.v / (2.0 * setup.checker->vehicle().deceleration) + 1.0;
     double length = 0.0;
     for (std::size_t i = 1; i < along.size(); ++i) length += std::hypot(along[i].x - along[i - 1].x, along[i].y - along[i - 1].y);
+    if (rollFor >= 0 && length < stopping + 0.5) return goOn(path, from, -1.0, sc, res, t, at);
+    // braking: its stopping distance and a metre; a piece that ends sooner is carried on straight
+    const double need = stopping + 1.0;
     if (along.empty()) along.push_back({s.x, s.y, s.yaw});
-    if (length < need)
+    if (rollFor < 0 && length < need)
     {
         const Pose2 e = along.back();
         const double sign = backward ? -1.0 : 1.0, go = need - length;
@@ -201,9 +180,44 @@ DriveResult Navigator::Impl::brake(const std::vector<Pose2> &path, std::size_t f
     }
     FollowerParams fp = options.follower;
     fp.startTime = t;
-    fp.startState = s;
-    fp.interrupt = [](const VehicleState &, double) { return true; };
+    fp.interruptRolling = rollFor >= 0;
+    const double until = t + rollFor;
+    double lastScan = t;
+    fp.interrupt = [&](const VehicleState &st, double now) {
+        if (now - lastScan >= options.sensor.period - 1e-9)
+        {
+            lastScan = now;
+            sense(sc, now, st.x, st.y, res);
+        }
+        return now >= until - 1e-9;
+    };
     return drive(along, fp, sc, res, t, at);
+}
+
+Navigator::Impl::Handover Navigator::Impl::handOver(QueryResult &q, double latency, std::size_t ahead, const Scenario &sc,
+                                                    NavigationResult &res, double &t, Pose2 &at, std::string &why)
+{
+    const std::vector<Pose2> &old = res.plans.back();
+    const double t0 = t;
+    const DriveResult o = goOn(old, ahead, latency, sc, res, t, at);
+    if (o.outcome == DriveResult::Outcome::Collided) return why = o.reason, Handover::Collided;
+    if (t < t0 + latency) res.drivingTime = t = t0 + latency;  // stopped short: it waits for the plan
+    const std::size_t j = options.replanRolling && q.status == ompl::base::PlannerStatus::EXACT_SOLUTION
+                              ? joinAt(q.path, car, std::abs(car.v) * latency + 2.0) : std::string::npos;
+    if (j != std::string::npos)  // the new path from where the car joins it
+    {
+        q.path.erase(q.path.begin(), q.path.begin() + std::ptrdiff_t(j));
+        q.path.front() = at;
+    }
+    if (j != std::string::npos && car.v != 0.0 && canDriveOn(q.path, car, setup.checker->vehicle())) return Handover::DriveOn;
+    // a stop first (a gear change, a bend too near, no plan from here): then plan again
+    if (car.v == 0.0) return Handover::PlanAgain;
+    DriveResult b = goOn(old, ahead, -1.0, sc, res, t, at);
+    if (b.outcome != DriveResult::Outcome::Collided && car.v != 0.0)  // past the old path's end: straight on
+        b = goOn(old, old.size(), -1.0, sc, res, t, at);
+    if (b.outcome == DriveResult::Outcome::Collided) return why = b.reason, Handover::Collided;
+    if (car.v != 0.0) return why = b.reason, Handover::CouldNotBrake;
+    return Handover::PlanAgain;
 }
 
 Navigator::Navigator(std::shared_ptr<const OccupancyGrid> map, const VehicleParams &vehicle, const NavigationOptions &options,
@@ -249,21 +263,28 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
         const double ownTol = m.options.follower.goalTolerance > 0 ? m.options.follower.goalTolerance : std::max(0.3, m.field->resolution());
         const double followTol = tol.position > 0 ? std::min(tol.position, ownTol) : ownTol;
         const GoalTolerance planTol{tol.position > 0 ? tol.position - followTol : 0.0, tol.yaw / 2};
-        const QueryResult q = runQuery(m.setup, m.planner, at, goal, m.options.planTimeLimit, freeGoalHeading, planTol);
+        QueryResult q = runQuery(m.setup, m.planner, at, goal, m.options.planTimeLimit, freeGoalHeading, planTol);
+        const double latency = m.options.planLatency >= 0 ? m.options.planLatency : pendingUpdate + q.seconds;
         if (!res.plans.empty()) res.replanSeconds.push_back(pendingUpdate + q.seconds);
         pendingUpdate = 0.0;
-        if (std::abs(m.car.v) > 1e-9)  // planned while rolling
+        if (m.car.v != 0.0)  // planned while rolling: the car rolled on along its old path meanwhile
         {
-            const bool driveOn = q.status == ompl::base::PlannerStatus::EXACT_SOLUTION && canDriveOn(q.path, m.car, work.vehicle());
-            if (!driveOn)  // a stop first (a gear change, a bend too near, no plan from here): then plan again
+            std::string why;
+            const Impl::Handover h = m.handOver(q, latency, ahead, scenario, res, t, at, why);
+            if (h == Impl::Handover::Collided) return finish(NavigationResult::Outcome::Collided, why);
+            if (h == Impl::Handover::CouldNotBrake) return finish(NavigationResult::Outcome::Stuck, "could not brake: " + why);
+            if (h == Impl::Handover::PlanAgain)
             {
-                const DriveResult b = m.brake(res.plans.back(), ahead, m.car, scenario, res, t, at);
-                if (b.outcome == DriveResult::Outcome::Collided) return finish(NavigationResult::Outcome::Collided, b.reason);
-                m.sense(scenario, t, at.x, at.y, res);
-                ++res.replans;
+                if (++res.replans > m.options.maxReplans)
+                    return finish(NavigationResult::Outcome::Stuck, "replanned " + std::to_string(res.replans) + " times");
                 continue;
             }
             ++res.rollingReplans;
+        }
+        else if (!res.plans.empty() && latency > 0)  // the car waits for the plan
+        {
+            t += latency;
+            res.drivingTime = t;
         }
         if (q.status != ompl::base::PlannerStatus::EXACT_SOLUTION)
         {
@@ -289,6 +310,7 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
         res.plans.push_back(q.path);
         const std::vector<Pose2> &path = res.plans.back();
         ahead = 0;
+        m.blockedAt = path.size();
         double lastScan = t;
         FollowerParams fp = m.options.follower;
         fp.startTime = t;
@@ -301,7 +323,7 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
             ahead = nearestAhead(path, ahead, s.x, s.y);
             if (!m.sense(scenario, now, s.x, s.y, res)) return false;
             for (std::size_t i = ahead; i < path.size(); ++i)
-                if (!work.isValid(path[i])) return true;
+                if (!work.isValid(path[i])) return m.blockedAt = i, true;
             return false;
         };
         const DriveResult d = m.drive(path, fp, scenario, res, t, at);

@@ -29,14 +29,22 @@ struct NavigationOptions
     /// than f) plans again from there.
     GoalTolerance goalTolerance;
     RangeSensorParams sensor;
-    FollowerParams follower;        ///< its startTime and interrupt are the navigator's
+    /// Its startTime, startState, interrupt and interruptRolling are the navigator's
+    FollowerParams follower;
     int maxReplans{30};             ///< replans before the run ends as Stuck
     int maxStalls{3};               ///< drives ending stuck (each followed by a replan) before it ends as Stuck; retreats as many
     /// Replan while rolling: when the path ahead becomes blocked, plan at once from where the
-    /// vehicle is, and when the new path starts in the gear it rolls in, drive on into it without
-    /// stopping; otherwise (or with no plan) brake to a standstill along the old path and plan
-    /// again from there. false: always brake to a standstill first, then plan.
+    /// vehicle is while it rolls on along the old path for the plan's latency (up to a metre
+    /// short of where that is blocked, or braking at once with less room), then drive on
+    /// into the new path from where it has got to, without stopping, when that path starts in its
+    /// gear, longer than its stopping distance and a half metre, with no bend that asks it to
+    /// brake below 70 % of its speed at once or its wheels to turn faster than they can; otherwise (or with no plan) brake to a standstill
+    /// along the old path and plan again from there. false: always brake to a standstill first.
     bool replanRolling{true};
+    /// Simulated time (s) a replan takes: the vehicle waits that long at a standstill, or rolls
+    /// on along its old path. < 0: each plan's own wall time (update + search). The first plan
+    /// is made before the clock starts.
+    double planLatency{-1.0};
 };
 
 /// How a navigation ended and what it measured.
@@ -44,10 +52,12 @@ struct NavigationResult
 {
     enum class Outcome { Reached, GoalBlocked, NoPath, Collided, Stuck, Timeout } outcome{Outcome::NoPath};
     std::string reason;                      ///< one line
-    double drivingTime{0.0};                 ///< s of simulated time, stops for replanning included
+    double drivingTime{0.0};                 ///< s of simulated time, stops and waits for replanning included
     double distanceDriven{0.0};              ///< m
     double minClearance{std::numeric_limits<double>::infinity()};  ///< m, of the body in the true world
-    int replans{0};                          ///< plans after the first
+    /// Plans after the first (a plan made while rolling that the vehicle could not drive on into
+    /// counts, and so does the one made once it has braked)
+    int replans{0};
     int stalls{0};                           ///< drives that ended stuck
     /// Times no plan started from where the vehicle stood and it backed up along its track
     /// (two vehicle lengths and a metre, as far as the working map is free) to plan again
@@ -76,10 +86,12 @@ struct NavigationResult
  * (DistanceField::update(), FootprintChecker::cellsChanged()), so the planner kept between plans
  * pays a search, not a set-up. When the path ahead of the vehicle (from its projection on, every
  * pose at its own heading) collides in the working map, the planner plans again from the pose
- * the vehicle rolls through (NavigationOptions::replanRolling) and the vehicle drives on into the
- * new path at its speed when that path starts in its gear; otherwise it brakes to a standstill
- * along the old path and plans again from there (the planning itself takes no simulated time);
- * a drive that ends stuck (the follower's recoveries spent) is replanned too. Obstacles moving faster than RangeSensorParams::stationarySpeed are left
+ * the vehicle rolls through while it rolls on along the old path for the plan's latency
+ * (NavigationOptions::replanRolling, planLatency), and the vehicle drives on into the new path
+ * from where it got to at its speed when that path lets it (canDriveOn); otherwise it brakes to
+ * a standstill along the old path and plans again from there. Every drive starts from the
+ * vehicle's own state (pose, speed, steering). A drive that ends stuck (the follower's
+ * recoveries spent) is replanned too. Obstacles moving faster than RangeSensorParams::stationarySpeed are left
  * to the follower's potential field (paper C: robustness to dynamic obstacles), as a driver
  * waits for a pedestrian to cross. A plan that fails where the goal's pose collides in the
  * working map, or where the sensor added cells within 1.5 m of the body's reach round the goal
