@@ -89,7 +89,7 @@ TEST(Navigator, AnUnmappedObstacleAcrossTheRouteIsSeenAndDrivenRound)
 // Replanning while rolling: the pallet seen ahead, the robot rolls on along its old path while
 // the plan is made (a fixed latency here, for a repeatable run) and drives on into the new path;
 // the same run braking to a standstill before every replan takes longer.
-TEST(Navigator, AReplanWhileRollingDrivesOnWithoutStopping)
+TEST(Navigator, AReplanWhileRollingStandsStillLessAndArrivesSooner)
 {
     Scenario sc;
     sc.obstacles.push_back(standingBox(20.0, 5.0, 1.0, 8.0));

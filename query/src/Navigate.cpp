@@ -5,6 +5,7 @@
 
 #include "gridcar/core/Angles.h"
 #include "gridcar/core/Cusps.h"
+#include "gridcar/path/PathMetrics.h"
 
 #include <algorithm>
 #include <chrono>
@@ -166,8 +167,7 @@ DriveResult Navigator::Impl::goOn(const std::vector<Pose2> &path, std::size_t fr
             splitAtCusps(std::vector<Pose2>(path.begin() + std::ptrdiff_t(from), path.begin() + std::ptrdiff_t(to)));
         if (!pieces.empty() && pieces.front().backward == backward) along = pieces.front().poses;
     }
-    double length = 0.0;
-    for (std::size_t i = 1; i < along.size(); ++i) length += std::hypot(along[i].x - along[i - 1].x, along[i].y - along[i - 1].y);
+    const double length = pathLength(along);
     if (rollFor >= 0 && length < stopping + 0.5) return goOn(path, from, -1.0, sc, res, t, at);
     // braking: its stopping distance and a metre; a piece that ends sooner is carried on straight
     const double need = stopping + 1.0;

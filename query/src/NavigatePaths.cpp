@@ -3,6 +3,7 @@
 
 #include "gridcar/core/Angles.h"
 #include "gridcar/core/Cusps.h"
+#include "gridcar/path/PathMetrics.h"
 #include "gridcar/vehicle/Dynamics.h"
 
 #include <algorithm>
@@ -56,9 +57,7 @@ bool canDriveOn(const std::vector<Pose2> &path, const VehicleState &s, const Veh
     if (pieces.empty() || pieces.front().backward != (s.v < 0)) return false;
     const double speed = std::abs(s.v);
     const std::vector<Pose2> &first = pieces.front().poses;
-    double length = 0.0;
-    for (std::size_t i = 1; i < first.size(); ++i) length += std::hypot(first[i].x - first[i - 1].x, first[i].y - first[i - 1].y);
-    if (length < speed * speed / (2.0 * vehicle.deceleration) + 0.5) return false;
+    if (pathLength(first) < speed * speed / (2.0 * vehicle.deceleration) + 0.5) return false;
     VehicleParams v = vehicle;
     if (pieces.front().backward)  // as the follower drives a reverse piece
     {
