@@ -60,7 +60,8 @@ TEST(Settings, EveryCarLatticeFieldRoundTrips)
     }
     // the table's settings (a new one is a row of it: no count to keep here)
     for (const char *n : {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "curve_heuristic",
-                          "primitives", "continuous_curvature", "curvature_rate", "cost_layer_weight", "turns", "shortcut"})
+                          "primitives", "continuous_curvature", "curvature_rate", "cost_layer_weight", "turns", "shortcut",
+                          "turn_heuristic"})
         EXPECT_EQ(names.count(n), 1u) << n;
 }
 

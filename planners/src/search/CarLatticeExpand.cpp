@@ -77,7 +77,10 @@ struct CarExpander
         const double tb = table.active() ? cost.minCostPerMetre() * table(i, j, h) : 0.0;
         const double d2 = !S.use2d_ ? -1.0 : below ? S.h2d_->lowerBound(i, j) : S.h2d_->distance(i, j);
         const double hp = bounds.position(p, d2, tb);
-        return hp == kInf ? hp : hp + bounds.turning(p);
+        if (hp == kInf || !S.useTurn_ || below) return hp == kInf ? hp : hp + bounds.turning(p);
+        const double t = S.turn_->distance(i, j, h);  // length and turning: bounds both terms
+        if (t == kInf) return t;
+        return std::max(hp + bounds.turning(p), t < 0 ? 0.0 : bounds.weight * bounds.obstacle(t));
     }
     double heuristic(std::uint32_t s)
     {
@@ -303,6 +306,42 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         out.unreachable = provenUnreachable(q, out.startShutIn);
         if (!out.unreachable.empty()) return out;
     }
+    setUpTurnHeuristic(cost, seeds, cancelled);
+    // the turn bound costs a search of its own over 8 axes a node: worth it where the search
+    // without it runs long (corners it does not see), not on the many queries it ends quickly
+    const bool turnLater = useTurn_ && q.turnBoundAfter > 0;
+    useTurn_ = useTurn_ && !turnLater;
+    std::atomic<std::uint64_t> count{0};
+    const std::function<bool()> firstStop = [&] {
+        if (progress) progress->store(count.load(std::memory_order_relaxed), std::memory_order_relaxed);
+        return count.load(std::memory_order_relaxed) >= q.turnBoundAfter || cancelled();
+    };
+    SearchResult res = searchOnce(q, cost, turnLater ? firstStop : cancelled, turnLater ? &count : progress);
+    if (turnLater && res.outcome == SearchOutcome::Cancelled && !cancelled())
+    {
+        useTurn_ = true;
+        const std::uint64_t before = res.expanded;
+        res = searchOnce(q, cost, cancelled, progress);
+        res.expanded += before;
+    }
+    cancelled_ = nullptr;
+    out.outcome = res.outcome;
+    out.expanded = res.expanded;
+    out.states = states_.size();
+    out.heuristicNodes = h2d_->closedCount();
+    out.turnBoundStates = useTurn_ ? turn_->closedCount() : 0;
+    out.shotsTried = shotsTried_;
+    const std::uint32_t end = res.outcome == SearchOutcome::Found ? res.goal : res.closest;
+    if (end == SearchSpace::kNoParent) return out;
+    out.exact = res.outcome == SearchOutcome::Found;
+    out.path = buildPath(end);
+    out.cost = space_.g(end) + (shotFrom_ == end ? shotCost_ : 0.0);
+    return out;
+}
+
+SearchResult CarLatticeSearch::searchOnce(const CarLatticeQuery &q, const LatticeCostModel &cost,
+                                          const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
+{
     states_.clear();
     prim_.clear();
     gear_.clear();
@@ -333,40 +372,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         CarExpander ex(*this, cost);
         res = astar(space_, starts, ex, cancelled, progress, /*reopen=*/false, 15u);
     }
-    cancelled_ = nullptr;
-    out.outcome = res.outcome;
-    out.expanded = res.expanded;
-    out.states = states_.size();
-    out.heuristicNodes = h2d_->closedCount();
-    out.shotsTried = shotsTried_;
-    const std::uint32_t end = res.outcome == SearchOutcome::Found ? res.goal : res.closest;
-    if (end == SearchSpace::kNoParent) return out;
-    out.exact = res.outcome == SearchOutcome::Found;
-    out.path = buildPath(end);
-    out.cost = space_.g(end) + (shotFrom_ == end ? shotCost_ : 0.0);
-    return out;
-}
-
-std::string CarLatticeSearch::provenUnreachable(const CarLatticeQuery &q, bool &startShutIn)
-{
-    // one goal position (a GoalState, or a PositionGoal within a micrometre: the reference
-    // point at the goal, at its heading or any) on gridcar's checker
-    if (!q.map || !q.aim || !q.shoot) return "";
-    if (q.inGoal && !(q.goalPositionTolerance >= 0 && q.goalPositionTolerance <= 1e-6)) return "";
-    constexpr std::size_t kProofCells = std::size_t(1) << 22;
-    const FootprintChecker::Reach r =
-        q.map->reachability(q.start, q.freeStartHeading, q.goal, q.goalYawTolerance != 0, kProofCells);
-    if (r.verdict != FootprintChecker::Reach::Separated) return "";
-    const double res = q.map->grid().resolution();
-    // (a search from the goal back has its ends swapped)
-    const bool goalShut = (r.shutEnd == 1) != q.timeReversed;
-    startShutIn = !goalShut;
-    char buf[320];
-    std::snprintf(buf, sizeof buf,
-                  "no motion of the vehicle joins the start and the goal: the free space round the %s (%.1f m^2 where "
-                  "the vehicle's inscribed disc fits) is shut off from the %s",
-                  goalShut ? "goal" : "start", double(r.shutCells) * res * res, goalShut ? "start" : "goal");
-    return buf;
+    return res;
 }
 
 double CarLatticeSearch::heuristicAt(int i, int j)

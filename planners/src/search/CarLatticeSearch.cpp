@@ -4,6 +4,7 @@
 
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -226,4 +227,75 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
     return true;
 }
 
+}  // namespace gridcar
+
+namespace gridcar
+{
+void CarLatticeSearch::setUpTurnHeuristic(const LatticeCostModel &cost,
+                                          const std::vector<std::pair<std::array<int, 2>, double>> &seeds,
+                                          const std::function<bool()> &cancelled)
+{
+    // only where turning has a cost of its own that the position bounds do not see, on a node
+    // lattice (a state's heading is a lattice direction) whose 2D distances are metres
+    const double perRad = cost.minTurnCostPerRad(), perMetre = cost.minCostPerMetre();
+    useTurn_ = false;
+    if (!use2d_ || !query_.settings.turnHeuristic || lattice_->hybrid() || cost.weighted() || !(perRad > 0) ||
+        !(perMetre > 0))
+        return;
+    const int H = lattice_->neighbourCount();
+    if (!turn_)
+    {
+        std::vector<std::array<int, 2>> steps;
+        for (int h = 0; h < H; ++h) steps.push_back({lattice_->vi(h), lattice_->vj(h)});
+        turn_ = std::make_unique<TurnHeuristic>(steps, lattice_->cell());
+        // the same 2D graph searched from the start, its node tests h2d_'s (asked once)
+        fromStart_ = std::make_unique<ObstacleHeuristic>(steps, lattice_->cell(),
+                                                         [this](int i, int j) { return h2d_->traversable(i, j); });
+        std::vector<int> axis;
+        for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
+        fromStart_->setAxisTest(axis, [this, H](int i, int j) {
+            std::uint16_t m = 0;
+            for (int a = 0; a < H / 2; ++a)
+                if (h2d_->fitsAxis(i, j, a)) m = std::uint16_t(m | (1u << a));
+            return m;
+        });
+    }
+    turn_->setCancel(cancelled);
+    fromStart_->setCancel(cancelled);
+    // directed at the goal's nearest node
+    std::array<int, 2> goalNode{0, 0};
+    double nearest = kInf;
+    for (const auto &s : seeds)
+        if (s.second < nearest) nearest = s.second, goalNode = s.first;
+    fromStart_->reset(i0_, j0_, ni_, nj_, {{{0, 0}, 0.0}}, goalNode[0], goalNode[1]);
+    // graph units are metres of the 2D distance, divided by ratio_ when read (ObstacleBound):
+    // a radian is worth ratio_ x perRad / perMetre of them
+    useTurn_ = turn_->reset(*h2d_, i0_, j0_, ni_, nj_, seeds, 0, 0, ratio_ * perRad / perMetre,
+                            [this](int i, int j) { return fromStart_->distance(i, j); });
+}
+}  // namespace gridcar
+
+namespace gridcar
+{
+std::string CarLatticeSearch::provenUnreachable(const CarLatticeQuery &q, bool &startShutIn)
+{
+    // one goal position (a GoalState, or a PositionGoal within a micrometre: the reference
+    // point at the goal, at its heading or any) on gridcar's checker
+    if (!q.map || !q.aim || !q.shoot) return "";
+    if (q.inGoal && !(q.goalPositionTolerance >= 0 && q.goalPositionTolerance <= 1e-6)) return "";
+    constexpr std::size_t kProofCells = std::size_t(1) << 22;
+    const FootprintChecker::Reach r =
+        q.map->reachability(q.start, q.freeStartHeading, q.goal, q.goalYawTolerance != 0, kProofCells);
+    if (r.verdict != FootprintChecker::Reach::Separated) return "";
+    const double res = q.map->grid().resolution();
+    // (a search from the goal back has its ends swapped)
+    const bool goalShut = (r.shutEnd == 1) != q.timeReversed;
+    startShutIn = !goalShut;
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "no motion of the vehicle joins the start and the goal: the free space round the %s (%.1f m^2 where "
+                  "the vehicle's inscribed disc fits) is shut off from the %s",
+                  goalShut ? "goal" : "start", double(r.shutCells) * res * res, goalShut ? "start" : "goal");
+    return buf;
+}
 }  // namespace gridcar

@@ -100,6 +100,13 @@ bool ObstacleHeuristic::axisFits(std::size_t n, int i, int j, int axis)
     return (x.axisOk >> axis) & 1u;
 }
 
+bool ObstacleHeuristic::fitsAxis(int i, int j, int axis)
+{
+    if (!inBox(i, j)) return false;
+    if (!fitsAxes_) return traversable(i, j);
+    return axisFits(idx(i, j), i, j, axis);
+}
+
 double ObstacleHeuristic::weightAt(std::size_t n, int i, int j)
 {
     Node &x = at(n);

@@ -13,6 +13,7 @@
 #include "gridcar/planners/search/CarLatticeSettings.h"
 #include "gridcar/planners/search/CurveTable.h"
 #include "gridcar/planners/search/ObstacleHeuristic.h"
+#include "gridcar/planners/search/TurnHeuristic.h"
 #include "gridcar/planners/search/detail/StateInterner.h"
 
 #include <algorithm>
@@ -115,6 +116,10 @@ struct CarLatticeQuery : CarGoalTerms
     /// generated, where that changes nothing but the work (a node lattice, costs known
     /// before the check: the same states closed with the same costs, ties apart).
     bool lazyChecks{true};
+    /// With settings.turnHeuristic and a cost model that charges turning: the search first runs
+    /// without the turn bound (TurnHeuristic, a search of its own), and again with it only
+    /// after this many expansions; 0: with it from the start.
+    std::uint64_t turnBoundAfter{10000};
     /// The map the search runs on, for the costs read off it (null: none, as on an OMPL
     /// application's own validity checker): its cost layer and its distance field.
     const FootprintChecker *map{nullptr};
@@ -184,6 +189,7 @@ struct CarLatticeResult
     std::uint64_t expanded{0};
     std::size_t states{0};      ///< lattice states generated
     std::size_t heuristicNodes{0};  ///< 2D nodes the obstacle-aware heuristic closed
+    std::size_t turnBoundStates{0};  ///< (node, axis) states the turn bound closed (0: not used)
     int shotsTried{0};
     /// Not empty: the goal was proven unreachable before any search (why, for the user); the
     /// result then has no path (see CarLatticeSearch: fast failure).
@@ -311,6 +317,9 @@ private:
     }
     std::vector<Pose2> buildPath(std::uint32_t end) const;
     double measureRatio() const;
+    /// One search of run()'s query from the start states (the states of any before cleared).
+    SearchResult searchOnce(const CarLatticeQuery &q, const LatticeCostModel &cost, const std::function<bool()> &cancelled,
+                            std::atomic<std::uint64_t> *progress);
 
     std::shared_ptr<CarCollision> col_;
     const FootprintCollision *fc_{nullptr};  ///< col_ when it is gridcar's checker (primitiveFree()'s inlined path)
@@ -322,6 +331,13 @@ private:
     CarLatticeQuery query_;
     std::unique_ptr<ObstacleHeuristic> h2d_;
     bool use2d_{true};
+    /// the 2D heuristic with turning counted (cost models that charge turning), kept across runs
+    std::unique_ptr<TurnHeuristic> turn_;
+    std::unique_ptr<ObstacleHeuristic> fromStart_;  ///< turn_'s guide: 2D distances from the start
+    bool useTurn_{false};
+    /// Resets turn_ for this run (after h2d_) when the cost model charges turning: sets useTurn_.
+    void setUpTurnHeuristic(const LatticeCostModel &cost, const std::vector<std::pair<std::array<int, 2>, double>> &seeds,
+                            const std::function<bool()> &cancelled);
     double seedRadius_{0};
     StateInterner states_;  ///< lattice node key -> dense state id
     std::vector<std::int16_t> prim_;  ///< primitive that reached each state (-1: a start state)

@@ -78,6 +78,9 @@ public:
     std::size_t closedCount() const { return closedCount_; }
     /// True if the node was asked about and is traversable.
     bool traversable(int i, int j);
+    /// True if a step along @p axis may start or end at node (i, j): bit axis of fitsAxes()
+    /// with an axis test (setAxisTest()), else traversable(); asked once per node and search.
+    bool fitsAxis(int i, int j, int axis);
 
 private:
     std::size_t idx(int i, int j) const { return std::size_t(j - j0_) * std::size_t(ni_) + std::size_t(i - i0_); }
