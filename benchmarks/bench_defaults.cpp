@@ -80,7 +80,8 @@ double quantile(std::vector<double> v, double q)
 
 /// One configuration over an area's queries, on one kept planner (as an application keeps it).
 std::vector<Run> runConfiguration(GridSetup &setup, const NamedConfiguration &c, const PlannerParams &extra,
-                                  const std::vector<std::pair<Pose2, Pose2>> &queries, double limit, double &setupSeconds)
+                                  const std::vector<std::pair<Pose2, Pose2>> &queries, double limit, double &setupSeconds,
+                                  const std::string &cli)
 {
     PlannerParams params = c.second;
     params.insert(params.end(), extra.begin(), extra.end());
@@ -95,6 +96,16 @@ std::vector<Run> runConfiguration(GridSetup &setup, const NamedConfiguration &c,
         const QueryResult r = runQuery(setup, planner, queries[k].first, queries[k].second, limit, !pose);
         Run run;
         run.seconds = r.seconds;
+        if (r.seconds > 1.0)  // the query to look at, as a command
+        {
+            std::string goal = std::to_string(queries[k].second.x) + "," + std::to_string(queries[k].second.y);
+            if (pose) goal += "," + std::to_string(queries[k].second.yaw * 180 / M_PI);
+            std::string set;
+            for (const auto &kv : params) set += " --param " + kv.first + "=" + kv.second;
+            std::fprintf(stderr, "[defaults]   %.2f s: %s --planner %s%s --start %f,%f,%f --goal %s\n", r.seconds, cli.c_str(),
+                         c.first.c_str(), set.c_str(), queries[k].first.x, queries[k].first.y, queries[k].first.yaw * 180 / M_PI,
+                         goal.c_str());
+        }
         run.exact = r.status == ompl::base::PlannerStatus::EXACT_SOLUTION;
         run.drivable = run.exact && r.drivability.drivable;
         run.length = r.metrics.length;
@@ -158,6 +169,9 @@ void runArea(const Options &o, const Area &area)
     std::fprintf(stderr, "[defaults] %s %s: %zu queries, map set-up %.2f s\n", area.name.c_str(), area.vehicle.c_str(),
                  queries.size(), mapSetup);
     const PlannerParams extra = parsePlannerParams(o.params);
+    // a slow query is named on stderr as the command that plans it again
+    std::string cli = "gridcar plan --map " + (area.map == "embedded" ? area.map : o.shared + "/" + area.map) +
+                      " --vehicle " + area.vehicle;
     std::vector<std::vector<Run>> tested, refs;
     std::vector<NamedConfiguration> testedConfigs;
     std::vector<double> setups;
@@ -166,7 +180,7 @@ void runArea(const Options &o, const Area &area)
         if (!o.planners.empty() && std::find(o.planners.begin(), o.planners.end(), c.first) == o.planners.end())
             continue;
         double s = 0;
-        tested.push_back(runConfiguration(setup, c, extra, queries, o.limit, s));
+        tested.push_back(runConfiguration(setup, c, extra, queries, o.limit, s, cli));
         testedConfigs.push_back(c);
         setups.push_back(s);
         std::fprintf(stderr, "[defaults]   %s done (planner set-up %.2f s)\n", configurationLabel(c).c_str(), s);
@@ -175,7 +189,7 @@ void runArea(const Options &o, const Area &area)
         for (const auto &c : kReferences)
         {
             double s = 0;
-            refs.push_back(runConfiguration(setup, c, {}, queries, o.limit, s));
+            refs.push_back(runConfiguration(setup, c, {}, queries, o.limit, s, cli));
             std::fprintf(stderr, "[defaults]   reference %s done\n", configurationLabel(c).c_str());
         }
     // each query's shortest drivable path over every configuration run
