@@ -193,6 +193,45 @@ def test_vehicle_from_dict_and_settings_of_every_kind():
     assert "in collision" in scene.why_invalid((25.2, 25.0))
 
 
+def test_vehicle_from_a_yaml_file(tmp_path):
+    f = tmp_path / "small-car.yaml"
+    f.write_text("preset: paper-i\nscale: 0.5\n")
+    veh = gridcar.Vehicle(str(f))
+    base = gridcar.Vehicle("paper-i")
+    assert veh.length == pytest.approx(base.length / 2) and veh.width == pytest.approx(base.width / 2)
+    # plan() takes the file's name as it takes a preset's
+    m = gridcar.Map.from_array(walled(), resolution=0.5)
+    r = gridcar.plan(m, (5, 5, 0), (45, 20, math.pi / 2), vehicle=str(f))
+    assert r.exact and r.drivable
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("lenght: 3.0\n")
+    with pytest.raises(gridcar.MapLoadError, match="lenght"):
+        gridcar.Vehicle(str(bad))
+
+
+def test_plot_tints_the_cost_layer(tmp_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    # a grey-level map read in ROS map_server's 'scale' mode: the grey band is free with a cost
+    rows, cols = 40, 60
+    img = np.full((rows, cols), 254, np.uint8)
+    img[0, :] = img[-1, :] = img[:, 0] = img[:, -1] = 0
+    img[:, 28:32] = 160  # a costly band across the middle
+    (tmp_path / "band.pgm").write_bytes(b"P5\n%d %d\n255\n" % (cols, rows) + img.tobytes())
+    (tmp_path / "band.yaml").write_text("image: band.pgm\nresolution: 0.5\norigin: [0.0, 0.0, 0.0]\n"
+                                        "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\nmode: scale\n")
+    m = gridcar.Map.load(str(tmp_path / "band.yaml"))
+    costs = m.costs()
+    assert costs is not None and costs[:, 29].max() > 0 and costs[:, 10].max() == 0
+    r = gridcar.Scene(m).plan((5, 10, 0), (25, 10, 0))
+    ax = gridcar.plot(m, plan=r)
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "cost layer" in labels
+    plain = gridcar.Map.from_array(walled(), resolution=0.5)
+    assert plain.costs() is None
+    assert "cost layer" not in [t.get_text() for t in gridcar.plot(plain).get_legend().get_texts()]
+
+
 def test_drive_reaches_the_goal():
     m = gridcar.Map.from_array(walled(), resolution=0.5)
     scene = gridcar.Scene(m, vehicle="paper-i")
