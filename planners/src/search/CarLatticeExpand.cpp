@@ -306,22 +306,29 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         out.unreachable = provenUnreachable(q, out.startShutIn);
         if (!out.unreachable.empty()) return out;
     }
-    setUpTurnHeuristic(cost, seeds, cancelled);
     // the turn bound costs a search of its own over 8 axes a node: worth it where the search
-    // without it runs long (corners it does not see), not on the many queries it ends quickly
-    const bool turnLater = useTurn_ && q.turnBoundAfter > 0;
-    useTurn_ = useTurn_ && !turnLater;
+    // without it runs long (corners it does not see), not on the many queries it ends quickly;
+    // progress counts both searches' expansions (a fallback stage's budget reads it)
+    const bool turnWanted = turnBoundApplies(q, cost);
+    const bool turnLater = turnWanted && q.turnBoundAfter > 0;
+    useTurn_ = false;
+    if (turnWanted && !turnLater) setUpTurnHeuristic(cost, seeds, cancelled);
     std::atomic<std::uint64_t> count{0};
-    const std::function<bool()> firstStop = [&] {
-        if (progress) progress->store(count.load(std::memory_order_relaxed), std::memory_order_relaxed);
-        return count.load(std::memory_order_relaxed) >= q.turnBoundAfter || cancelled();
+    std::uint64_t before = 0;
+    bool restarted = false;
+    const std::function<bool()> stop = [&] {
+        const std::uint64_t n = before + count.load(std::memory_order_relaxed);
+        if (progress) progress->store(n, std::memory_order_relaxed);
+        return (turnLater && !restarted && n >= q.turnBoundAfter) || cancelled();
     };
-    SearchResult res = searchOnce(q, cost, turnLater ? firstStop : cancelled, turnLater ? &count : progress);
+    SearchResult res = searchOnce(q, cost, stop, &count);
     if (turnLater && res.outcome == SearchOutcome::Cancelled && !cancelled())
     {
-        useTurn_ = true;
-        const std::uint64_t before = res.expanded;
-        res = searchOnce(q, cost, cancelled, progress);
+        restarted = true;
+        before = res.expanded;
+        count.store(0);
+        setUpTurnHeuristic(cost, seeds, cancelled);  // (too large a box: the same search again)
+        res = searchOnce(q, cost, stop, &count);
         res.expanded += before;
     }
     cancelled_ = nullptr;
@@ -380,16 +387,6 @@ double CarLatticeSearch::heuristicAt(int i, int j)
     LengthCost len;
     CarExpander ex(*this, len);
     return ex.hNode(i, j);
-}
-
-void CarLatticeSearch::forEachExpanded(const std::function<void(const Pose2 &, const Pose2 &)> &fn) const
-{
-    space_.forEach([&](std::uint32_t s, bool closed) {
-        if (!closed) return;
-        const Pose2 node = statePose(s);
-        const std::uint32_t p = space_.parent(s);
-        fn(node, p == SearchSpace::kNoParent ? node : statePose(p));
-    });
 }
 
 }  // namespace gridcar

@@ -231,17 +231,24 @@ bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, st
 
 namespace gridcar
 {
+bool CarLatticeSearch::turnBoundApplies(const CarLatticeQuery &q, const LatticeCostModel &cost) const
+{
+    // only where turning has a cost of its own that the position bounds do not see, on a node
+    // lattice (a state's heading is a lattice direction) whose 2D distances are metres, towards
+    // a goal the seeds stand for (a goal position, or one within their radius: a wider
+    // tolerance ends paths at nodes whose walk the seeds would make turn)
+    if (!use2d_ || !q.settings.turnHeuristic || lattice_->hybrid() || cost.weighted() || !(cost.minTurnCostPerRad() > 0) ||
+        !(cost.minCostPerMetre() > 0))
+        return false;
+    return !q.inGoal || (q.goalPositionTolerance >= 0 && q.goalPositionTolerance <= seedRadius_);
+}
+
 void CarLatticeSearch::setUpTurnHeuristic(const LatticeCostModel &cost,
                                           const std::vector<std::pair<std::array<int, 2>, double>> &seeds,
                                           const std::function<bool()> &cancelled)
 {
-    // only where turning has a cost of its own that the position bounds do not see, on a node
-    // lattice (a state's heading is a lattice direction) whose 2D distances are metres
     const double perRad = cost.minTurnCostPerRad(), perMetre = cost.minCostPerMetre();
     useTurn_ = false;
-    if (!use2d_ || !query_.settings.turnHeuristic || lattice_->hybrid() || cost.weighted() || !(perRad > 0) ||
-        !(perMetre > 0))
-        return;
     const int H = lattice_->neighbourCount();
     if (!turn_)
     {
@@ -297,5 +304,24 @@ std::string CarLatticeSearch::provenUnreachable(const CarLatticeQuery &q, bool &
                   "the vehicle's inscribed disc fits) is shut off from the %s",
                   goalShut ? "goal" : "start", double(r.shutCells) * res * res, goalShut ? "start" : "goal");
     return buf;
+}
+
+double CarLatticeSearch::turnBoundAt(int i, int j, int h, const LatticeCostModel &cost)
+{
+    if (!useTurn_) return std::nan("");
+    const double t = turn_->distance(i, j, h);
+    if (t == kInf || t < 0) return t;
+    const double perMetre = cost.minCostPerMetre();
+    return t * perMetre / ratio_ - seedRadius_ * perMetre;
+}
+
+void CarLatticeSearch::forEachExpanded(const std::function<void(const Pose2 &, const Pose2 &)> &fn) const
+{
+    space_.forEach([&](std::uint32_t s, bool closed) {
+        if (!closed) return;
+        const Pose2 node = statePose(s);
+        const std::uint32_t p = space_.parent(s);
+        fn(node, p == SearchSpace::kNoParent ? node : statePose(p));
+    });
 }
 }  // namespace gridcar

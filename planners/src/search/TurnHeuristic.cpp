@@ -11,7 +11,7 @@ namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// A stored float read back as a bound: less its rounding.
-double fromStored(float g) { return double(g) * (1.0 - 1e-6); }
+double fromStored(float g) { return std::max(0.0, double(g) * (1.0 - 1e-5) - 1e-6); }
 }  // namespace
 
 TurnHeuristic::TurnHeuristic(std::vector<std::array<int, 2>> steps, double cell)
@@ -95,6 +95,7 @@ double TurnHeuristic::guideAt(Node &x, int i, int j)
 {
     if (x.guide >= 0) return x.guide;
     double d = guide_ ? guide_(i, j) : -1.0;
+    if (guide_ && d < 0) stopped_ = true;  // the guide's search was cancelled: so is this one
     if (!(d >= 0 && d < kInf))
     {
         const double di = i - ti_, dj = j - tj_;
@@ -116,7 +117,7 @@ void TurnHeuristic::relax(std::size_t n, int i, int j, int a, double g)
 
 bool TurnHeuristic::expandUntil(std::size_t target, int axis)
 {
-    while (!heap_.empty())
+    while (!heap_.empty() && !stopped_)
     {
         if (cancelled_ && poll_.due(closedCount_ + 1) && (poll_.polled(), cancelled_()))
         {

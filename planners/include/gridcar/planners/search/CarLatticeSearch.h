@@ -244,6 +244,9 @@ public:
 
     /// The heuristic of the last run() at a node of its lattice at heading h (world pose out).
     double heuristicAt(int i, int j);
+    /// The turn bound of the last run at node (i, j), heading h, in @p cost's units (what the
+    /// heuristic takes it as, unweighted; for tests); NaN when the run did not use it.
+    double turnBoundAt(int i, int j, int h, const LatticeCostModel &cost);
     /// The lattice's CurveTable for the running query's curveWithin, at most 4 Mi entries
     /// (built on first use and kept while the range stays; null on a hybrid lattice).
     const CurveTable *curveTable();
@@ -335,7 +338,11 @@ private:
     std::unique_ptr<TurnHeuristic> turn_;
     std::unique_ptr<ObstacleHeuristic> fromStart_;  ///< turn_'s guide: 2D distances from the start
     bool useTurn_{false};
-    /// Resets turn_ for this run (after h2d_) when the cost model charges turning: sets useTurn_.
+    /// True if the turn bound applies to the query: a cost model that charges turning, on a
+    /// node lattice, an aimed search whose goal region the seeds stand for.
+    bool turnBoundApplies(const CarLatticeQuery &q, const LatticeCostModel &cost) const;
+    /// Resets turn_ for this run (after h2d_; turnBoundApplies()): sets useTurn_ (false when
+    /// the box is too large).
     void setUpTurnHeuristic(const LatticeCostModel &cost, const std::vector<std::pair<std::array<int, 2>, double>> &seeds,
                             const std::function<bool()> &cancelled);
     double seedRadius_{0};

@@ -35,8 +35,12 @@ namespace gridcar
  * ratio x its length + c x its turning, and the search's value, with rotation costed at
  * ratio x c per radian, divided by ratio (as the 2D distance is) is a lower bound of the
  * path's cost, for every goal heading (the seeds take every axis at their cost). Its node
- * tests are those of ObstacleHeuristic (shared: asked once per node and query), so it is
- * admissible where that bound is.
+ * tests are those of ObstacleHeuristic (shared: asked once per node and query). Two things the
+ * argument does not cover: the walk's corner node (where its two steps meet, off the curve)
+ * must pass those tests; and a path that ends with the analytic shot ends between nodes at a
+ * heading between the lattice's, so the walk to a seed may turn up to two gaps between
+ * neighbouring headings (and the seed's offset) more than the shot. docs/planners.md ("Turn
+ * bound") says what was measured and why no allowance is taken off.
  *
  * Resumable as ObstacleHeuristic (Reverse Resumable A*, directed at the query's start node by
  * the 2D distance from it, or the Euclidean one: rotations cost >= 0, moves their length), its
