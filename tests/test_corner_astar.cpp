@@ -3,6 +3,7 @@
 #include "gridcar/spaces/OmplAdapters.h"
 #include "gridcar/vehicle/Dynamics.h"
 #include "gridcar/planners/GridAStar.h"
+#include "gridcar/planners/ImprovedAStar.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/planners/SmoothedPlanner.h"
 
@@ -272,4 +273,7 @@ TEST(CornerAStar, DrivingTimeCostOnTheCarLattice)
     auto q = std::make_shared<CornerAStarGrid>(g.ss->getSpaceInformation());
     EXPECT_FALSE(q->params().hasParam("cost"));
     EXPECT_TRUE(std::make_shared<CornerAStar>(g.ss->getSpaceInformation())->params().hasParam("cost"));
+    // so is the turn bound, which only corner weights use
+    EXPECT_TRUE(std::make_shared<CornerAStar>(g.ss->getSpaceInformation())->params().hasParam("turn_heuristic"));
+    EXPECT_FALSE(std::make_shared<ImprovedAStar>(g.ss->getSpaceInformation())->params().hasParam("turn_heuristic"));
 }

@@ -60,8 +60,7 @@ TEST(Settings, EveryCarLatticeFieldRoundTrips)
     }
     // the table's settings (a new one is a row of it: no count to keep here)
     for (const char *n : {"headings", "heuristic_weight", "reverse", "reverse_penalty", "cusp_penalty", "curve_heuristic",
-                          "primitives", "continuous_curvature", "curvature_rate", "cost_layer_weight", "turns", "shortcut",
-                          "turn_heuristic"})
+                          "primitives", "continuous_curvature", "curvature_rate", "cost_layer_weight", "turns", "shortcut"})
         EXPECT_EQ(names.count(n), 1u) << n;
 }
 

@@ -183,6 +183,8 @@ struct CornerLikeCost : LatticeCostModel
     }
     bool shapeOnly() const override { return true; }
     double minTurnCostPerRad() const override { return 2.7 / (M_PI / 4); }
+    bool turnBound() const override { return bound; }
+    bool bound{true};  ///< corner-astar's `turn_heuristic`
 };
 }  // namespace
 
@@ -215,9 +217,9 @@ TEST(TurnHeuristic, CornerCostSearchFindsNearOptimalPathsAndExpandsLess)
             const CarLatticeResult a = search.run(q, cost, [] { return false; });
             const bool turnUsed = a.turnBoundStates > 0;
             const double bound = search.turnBoundAt(0, 0, 0, cost);
-            CarLatticeQuery plain = q;
-            plain.settings.turnHeuristic = false;
-            const CarLatticeResult b = search.run(plain, cost, [] { return false; });
+            CornerLikeCost plain;
+            plain.bound = false;
+            const CarLatticeResult b = search.run(q, plain, [] { return false; });
             EXPECT_EQ(b.turnBoundStates, 0u);
             CarLatticeQuery blind = q;
             blind.aim = false;

@@ -99,9 +99,6 @@ std::vector<Field> makeFields()
                      s.turns = TurnShape(pick("turns", v, kTurns, "auto, arc or clothoid"));
                  },
                  [](const S &s) { return std::string(word(s.turns)); }});
-    f.push_back({"turn_heuristic", "0,1", "the 2D heuristic counts the turning its route needs (corner weights)",
-                 [](S &s, const std::string &v) { s.turnHeuristic = settings::onOff("turn_heuristic", v); },
-                 [](const S &s) { return std::string(s.turnHeuristic ? "1" : "0"); }});
     f.push_back(autoSwitch("shortcut", &S::shortcut, "auto, on (1, true) or off (0, false)",
                            "a found path shortcut by free analytic curves: auto (on with reverse=on), on, off"));
     return f;

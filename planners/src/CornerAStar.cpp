@@ -109,6 +109,13 @@ private:
 CornerAStar::CornerAStar(const ompl::base::SpaceInformationPtr &si) : CornerWeighted(si, "corner-astar")
 {
     declareParam<std::string>("cost", this, &CornerAStar::setCost, &CornerAStar::cost, "corners,time");
+    declareParam<bool>("turn_heuristic", this, &CornerAStar::setTurnHeuristic, &CornerAStar::turnHeuristic, "0,1");
+}
+
+void CornerAStar::setTurnHeuristic(bool on)
+{
+    turnHeuristic_ = on;
+    parameterSet("turn_heuristic");
 }
 
 void CornerAStar::setCost(const std::string &c)
@@ -135,6 +142,7 @@ public:
         return length + p_.turnWeight(absTurn);
     }
     bool shapeOnly() const override { return true; }
+    bool turnBound() const override { return p_.turnHeuristic(); }
     double minTurnCostPerRad() const override
     {
         // turnWeight() is linear between its table points, so w(x) / x is least at one of them

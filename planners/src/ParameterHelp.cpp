@@ -22,6 +22,7 @@ const std::map<std::string, std::string> &singles()
         {"lattice_cell", "cell of the search's lattice, m (0: from the map's resolution and the vehicle)"},
         {"match_goal_heading", "arrive at a GoalState's yaw (else at any heading where the vehicle fits)"},
         {"cost", "corner A*'s search cost: corners (length + corner weights) or time (driving time)"},
+        {"turn_heuristic", "the 2D heuristic also counts the corner weights of the turning its route needs (with cost=corners)"},
         {"allow_corner_cutting", "diagonal moves between two blocked cells' corners allowed"},
         {"heuristic", "paper I's grid heuristic: euclidean, arc (the turning-arc one) or octile"},
         {"contour", "paper I's body-contour cost s(n): fcl (exact) or points (the paper's contour points)"},

@@ -237,7 +237,7 @@ bool CarLatticeSearch::turnBoundApplies(const CarLatticeQuery &q, const LatticeC
     // lattice (a state's heading is a lattice direction) whose 2D distances are metres, towards
     // a goal the seeds stand for (a goal position, or one within their radius: a wider
     // tolerance ends paths at nodes whose walk the seeds would make turn)
-    if (!use2d_ || !q.settings.turnHeuristic || lattice_->hybrid() || cost.weighted() || !(cost.minTurnCostPerRad() > 0) ||
+    if (!use2d_ || !cost.turnBound() || !(cost.minTurnCostPerRad() > 0) || lattice_->hybrid() || cost.weighted() ||
         !(cost.minCostPerMetre() > 0))
         return false;
     return !q.inGoal || (q.goalPositionTolerance >= 0 && q.goalPositionTolerance <= seedRadius_);

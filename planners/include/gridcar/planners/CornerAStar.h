@@ -91,6 +91,10 @@ public:
     /// `cost`: corners (length + corner weights, paper C) or time (driving time, seconds).
     std::string cost() const { return timeCost_ ? "time" : "corners"; }
     void setCost(const std::string &c);
+    /// `turn_heuristic` (default 1): with `cost = corners`, the 2D heuristic also counts the
+    /// corner weights of the turning its route needs (TurnHeuristic; docs/planners.md).
+    bool turnHeuristic() const { return turnHeuristic_; }
+    void setTurnHeuristic(bool on);
     /// Corner weight (m) of a heading change of @p rad radians (linear between the table's).
     double turnWeight(double rad) const { return gridcar::turnWeight(weights(), rad); }
 
@@ -99,6 +103,7 @@ protected:
 
 private:
     bool timeCost_{false};  ///< `cost` = time: driving time (s) instead of length + corner weights
+    bool turnHeuristic_{true};  ///< `turn_heuristic`
 };
 
 /**

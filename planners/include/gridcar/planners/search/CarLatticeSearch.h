@@ -47,6 +47,9 @@ public:
     /// A lower bound of the cost per radian of heading change (beyond the length): the
     /// heuristic adds it times the least turning any forward path to the goal needs.
     virtual double minTurnCostPerRad() const { return 0.0; }
+    /// True if the search may bound the turning a route needs (TurnHeuristic) with
+    /// minTurnCostPerRad(): corner-astar's `turn_heuristic`. Default: whenever turning costs.
+    virtual bool turnBound() const { return minTurnCostPerRad() > 0; }
     /// The cost of a metre where a length (the cusp penalty, metres of the gear change) is
     /// turned into this model's units. Default 1 (costs in metres).
     virtual double costPerMetreOfPenalty() const { return 1.0; }
@@ -116,7 +119,7 @@ struct CarLatticeQuery : CarGoalTerms
     /// generated, where that changes nothing but the work (a node lattice, costs known
     /// before the check: the same states closed with the same costs, ties apart).
     bool lazyChecks{true};
-    /// With settings.turnHeuristic and a cost model that charges turning: the search first runs
+    /// With a cost model whose turnBound() holds (corner-astar's corner weights): the search first runs
     /// without the turn bound (TurnHeuristic, a search of its own), and again with it only
     /// after this many expansions; 0: with it from the start.
     std::uint64_t turnBoundAfter{10000};

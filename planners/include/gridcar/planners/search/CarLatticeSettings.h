@@ -76,9 +76,6 @@ struct CarLatticeSettings
     /// `shortcut`: a found path shortened by the analytic expansion's curves where they are
     /// free, shorter and cheaper (auto: on with reverse=on)
     AutoSwitch shortcut{AutoSwitch::Auto};
-    /// `turn_heuristic`: with a cost model that charges turning (corner-astar's corner
-    /// weights), the 2D heuristic counts the turning its route needs (TurnHeuristic)
-    bool turnHeuristic{true};
 
     /// The settings of a query built by hand on the search alone: unweighted A*, no penalty on
     /// reversing (the planners copy in their own).
