@@ -118,14 +118,8 @@ bool ObstacleHeuristic::expandUntil(std::size_t target)
 {
     while (!heap_.empty())
     {
-        if (cancelled_ && poll_.due(closedCount_ + 1) && (poll_.polled(), cancelled_()))
-        {
-            stopped_ = true;
-            return false;
-        }
-        std::pop_heap(heap_.begin(), heap_.end());
-        const Entry e = heap_.back();
-        heap_.pop_back();
+        Entry e;
+        if (!popUnlessCancelled(heap_, poll_, closedCount_ + 1, cancelled_, stopped_, e)) return false;
         Node &en = at(e.n);
         if ((en.state & kClosed) || e.g > en.g) continue;
         en.state |= kClosed;

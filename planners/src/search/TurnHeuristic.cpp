@@ -119,14 +119,8 @@ bool TurnHeuristic::expandUntil(std::size_t target, int axis)
 {
     while (!heap_.empty() && !stopped_)
     {
-        if (cancelled_ && poll_.due(closedCount_ + 1) && (poll_.polled(), cancelled_()))
-        {
-            stopped_ = true;
-            return false;
-        }
-        std::pop_heap(heap_.begin(), heap_.end());
-        const Entry e = heap_.back();
-        heap_.pop_back();
+        Entry e;
+        if (!popUnlessCancelled(heap_, poll_, closedCount_ + 1, cancelled_, stopped_, e)) return false;
         Node &x = at(e.n);
         const int a = e.a;
         if ((x.closed >> a) & 1u || float(e.g) > x.g[a]) continue;

@@ -4,8 +4,11 @@
 /// Internal to the search core (detail/): installed because the search loop's header includes
 /// it, not part of gridcar's API.
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 namespace gridcar
 {
@@ -39,5 +42,25 @@ private:
     std::uint64_t mask_{0};
     Clock::time_point last_{Clock::now()};
 };
+
+/**
+ * @brief One step of a resumable search's loop (the 2D heuristics'): @p cancelled polled when
+ * @p schedule says expansion number @p count is due, then the top of @p heap (a std heap)
+ * popped into @p out. False, with @p stopped set, when the condition fired.
+ */
+template <class Entry>
+bool popUnlessCancelled(std::vector<Entry> &heap, PollSchedule &schedule, std::uint64_t count,
+                        const std::function<bool()> &cancelled, bool &stopped, Entry &out)
+{
+    if (cancelled && schedule.due(count) && (schedule.polled(), cancelled()))
+    {
+        stopped = true;
+        return false;
+    }
+    std::pop_heap(heap.begin(), heap.end());
+    out = heap.back();
+    heap.pop_back();
+    return true;
+}
 
 }  // namespace gridcar
