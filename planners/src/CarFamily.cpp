@@ -132,9 +132,11 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     // the fallbacks run only where a path may exist (FootprintChecker::reachability())
     std::string proven;
     bool startShutIn = false;
-    if (r.outcome == SearchOutcome::Exhausted && !r.exact && r.unreachable.empty() && !schedule.stages().empty())
+    if (q.fallbacks && r.outcome == SearchOutcome::Exhausted && !r.exact && r.unreachable.empty() &&
+        !schedule.stages().empty())
         proven = CarLatticeSearch::provenUnreachable(q, startShutIn);
-    if (r.outcome != SearchOutcome::Cancelled && r.unreachable.empty() && proven.empty()) schedule.run(runStage, [&] { return r.exact || cancelled(); });
+    if (q.fallbacks && r.outcome != SearchOutcome::Cancelled && r.unreachable.empty() && proven.empty())
+        schedule.run(runStage, [&] { return r.exact || cancelled(); });
     // what the lattice's few headings and coarse cells leave over, taken off by free curves
     if (r.exact && post.shortcutCurves > 0)
     {

@@ -94,6 +94,16 @@ std::vector<Field> makeFields()
                        "in [0, 1000] (extra metres per metre at cost 252)", "weight of the map's cost layer"));
     f.push_back(number("clearance", &S::clearance, 0.0, 10.0, "0.:0.05:2.", "a length in [0, 10] m",
                        "soft margin, m: motions nearer an obstacle than this cost more (0: off)"));
+    f.push_back({"safety_margin", "0.:0.05:1.",
+                 "hard margin, m: searched again for the body grown by it where the path passes nearer, kept if at "
+                 "most 5 % dearer (auto: a quarter of the width within 0.05-0.3 m; 0: off)",
+                 [](S &s, const std::string &v) {
+                     if (settings::switchWord(v) == "auto")
+                         s.safetyMargin.reset();
+                     else
+                         s.safetyMargin = settings::real("safety_margin", v, 0.0, 10.0, "a length in [0, 10] m or auto");
+                 },
+                 [](const S &s) { return s.safetyMargin ? settings::print(*s.safetyMargin) : std::string("auto"); }});
     f.push_back({"turns", "auto,arc,clothoid", "the lattice's turns: auto, arc, clothoid",
                  [](S &s, const std::string &v) {
                      s.turns = TurnShape(pick("turns", v, kTurns, "auto, arc or clothoid"));

@@ -39,18 +39,28 @@ void CarLatticePlanner::setupFamily(const std::shared_ptr<CarCollision> &collisi
     if (settings_.reverse == AutoSwitch::On && onDubinsSpace())
         throw std::invalid_argument(getName() + ": reverse=on on a Dubins space, which drives forwards only (use "
                                                 "reverse=auto or the Reeds-Shepp space)");
+    setupCar(car_, collision, 0.0);
+    // the grown body's checker and searches are made again when a query first needs them (the
+    // settings, the map or the vehicle may have changed)
+    grown_.reset();
+    grownCollision_.reset();
+    lastGrown_ = false;
+}
+
+void CarLatticePlanner::setupCar(CarFamily &family, const std::shared_ptr<CarCollision> &collision, double reach)
+{
     // turns=auto: the lattice's clothoid turns for routes, its arcs for a goal pose to meet
-    const CarLatticeConfig cfg = carLatticeConfig();
+    const CarLatticeConfig cfg = carLatticeConfig(settings_.primitives == PrimitiveSet::Hybrid, reach);
     CarLatticeConfig arcs = cfg;
     arcs.curvatureRate = 0.0;
     const CarLatticeConfig *forPoses = settings_.turns == TurnShape::Auto && cfg != arcs ? &arcs : nullptr;
     if (settings_.primitives == PrimitiveSet::Auto)
     {
-        const CarLatticeConfig hybrid = carLatticeConfig(true);
-        car_.setup(cfg, collision, &hybrid, forPoses);
+        const CarLatticeConfig hybrid = carLatticeConfig(true, reach);
+        family.setup(cfg, collision, &hybrid, forPoses);
     }
     else
-        car_.setup(cfg, collision, nullptr, forPoses);
+        family.setup(cfg, collision, nullptr, forPoses);
 }
 
 FamilyRun CarLatticePlanner::searchFamily(const ompl::base::State *start, const GoalTarget &goal,
@@ -69,12 +79,16 @@ FamilyRun CarLatticePlanner::searchFamily(const ompl::base::State *start, const 
                   "raw mode, on gridcar's validity checker): it has no effect",
                   getName().c_str());
     const CarPostProcessing post{shortcutting() ? kShortcutCurves : 0, curvatureRate(), 1.0 / turningRadius()};
-    return car_.solve(si_, start, std::move(terms), post, goal, *cost, cancelled, progress);
+    lastGrown_ = false;
+    FamilyRun run = car_.solve(si_, start, terms, post, goal, *cost, cancelled, progress);
+    if (const double margin = safetyMargin(); margin > 0 && run.end.reached && run.end.path && !cancelled())
+        keepMargin(run, margin, start, terms, post, goal, *cost, cancelled, progress);
+    return run;
 }
 
 void CarLatticePlanner::familyData(ompl::base::PlannerData &data, PlannerDataStates &states) const
 {
-    car_.plannerData(data, states);
+    (lastGrown_ ? grownCar_ : car_).plannerData(data, states);
 }
 
 CarLatticeConfig CarLatticePlanner::carLatticeConfig() const
@@ -128,7 +142,7 @@ double CarLatticePlanner::cuspPenalty() const
     return settings_.cuspPenalty ? *settings_.cuspPenalty : gearChangeDistance(vehicle());
 }
 
-CarLatticeConfig CarLatticePlanner::carLatticeConfig(bool hybrid) const
+CarLatticeConfig CarLatticePlanner::carLatticeConfig(bool hybrid, double reach) const
 {
     const double rmin = turningRadius();
     CarLatticeConfig cfg;
@@ -140,7 +154,7 @@ CarLatticeConfig CarLatticePlanner::carLatticeConfig(bool hybrid) const
         const double want = std::min(v.isPoint() ? 4 * res : v.width, rmin > 0 ? rmin : 4 * res) / 4;
         cfg.cell = latticeCell() > 0 ? latticeCell() : res * std::max(1.0, std::round(want / res));
         cfg.spacing = std::min(res, 0.1);
-        cfg.reach = checker_->reach();
+        cfg.reach = reach > 0 ? reach : checker_->reach();
     }
     else
     {

@@ -136,6 +136,8 @@ struct CarExpander
     }
     /// The heuristic of each state, kept (lazyAstar() asks it for every motion into a state).
     std::vector<double> hKept;
+    /// A state at cost @p g with heuristic @p h (weighted) lies on no path within the query's costBound.
+    bool beyondBound(double g, double h) const { return g + h / bounds.weight > S.query_.costBound; }
     /// Successors of @p s: with Lazy, unchecked (a node lattice's states have their node's
     /// pose, whichever motion reaches them, so nothing but the primitive is recorded).
     template <bool Lazy, class Emit>
@@ -204,13 +206,13 @@ struct CarExpander
                 // the exact h if known, else a bound that costs no 2D search (lazyAstar()
                 // computes the exact one when the entry comes up)
                 const double hn = std::isnan(hKept[id]) ? hWith(end, ni, nj, nh, true) : hKept[id];
-                if (hn == kInf) continue;
+                if (hn == kInf || beyondBound(gs + step, hn)) continue;
                 emit(id, step, hn, std::uint32_t(p));
             }
             else
             {
                 const double hn = hAt(end, ni, nj, nh);
-                if (hn == kInf) continue;
+                if (hn == kInf || beyondBound(gs + step, hn)) continue;
                 const std::uint32_t id = seen != StateInterner::kNone ? seen : S.intern(ni, nj, nh);
                 emit(id, step, [this, id, p, hn, gear, end] {
                     S.prim_[id] = std::int16_t(p);

@@ -67,7 +67,16 @@ public:
     /// The primitive set setup() gives the car lattice for this map and vehicle (with
     /// `primitives=auto`, the lattice's; carLatticeConfig(true) is its hybrid fallback).
     CarLatticeConfig carLatticeConfig() const;
-    CarLatticeConfig carLatticeConfig(bool hybrid) const;
+    /// With @p reach > 0, the primitives sampled for a body of that reach (the grown body of
+    /// the safety margin) instead of the checker's.
+    CarLatticeConfig carLatticeConfig(bool hybrid, double reach = 0.0) const;
+    /// The hard safety margin in use (m): `safety_margin` as set, else (auto) a quarter of the
+    /// vehicle's width within [0.05, 0.3] m; 0 for a point vehicle, a polygon footprint or an
+    /// application's own validity checker (no distance field to grow the body in).
+    double safetyMargin() const;
+    /// True if the last solve()'s path came from the search for the body grown by the safety
+    /// margin (the first path passed nearer an obstacle, and the grown one cost at most 5 % more).
+    bool lastPathKeepsMargin() const { return lastGrown_; }
 
 protected:
     /// The cost the search minimises (default: length).
@@ -78,8 +87,26 @@ protected:
     void familyData(ompl::base::PlannerData &data, PlannerDataStates &states) const override;
 
 private:
+    /// The family's searches on @p collision (@p reach: see carLatticeConfig()).
+    void setupCar(CarFamily &family, const std::shared_ptr<CarCollision> &collision, double reach);
+    /// The safety margin's pass (CarLatticeMargin.cpp): where @p run's path passes nearer an
+    /// obstacle than @p margin, the same query for the grown body, on an expansion budget of
+    /// the first search's + 10 000 and within 5 % of its cost; its path replaces @p run's if it costs at most 5 % more.
+    void keepMargin(FamilyRun &run, double margin, const ompl::base::State *start, const CarLatticeQuery &terms,
+                    const CarPostProcessing &post, const GoalTarget &goal, const LatticeCostModel &cost,
+                    const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress);
+    /// The checker of the body grown by @p margin on the map as it is now (made on first use,
+    /// again after the map's cells or the margin changed) and its collision model.
+    const FootprintChecker &grownChecker(double margin);
+
     CarLatticeSettings settings_;
     CarFamily car_;
+    std::unique_ptr<FootprintChecker> grown_;  ///< the body grown by grownBy_ (null: none yet)
+    std::shared_ptr<CarCollision> grownCollision_;
+    CarFamily grownCar_;
+    double grownBy_{0.0};
+    std::uint64_t grownVersion_{0};  ///< checker_'s mapVersion() grown_ was made on
+    bool lastGrown_{false};
 };
 
 }  // namespace gridcar

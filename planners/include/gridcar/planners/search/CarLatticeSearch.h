@@ -21,6 +21,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -123,6 +124,13 @@ struct CarLatticeQuery : CarGoalTerms
     /// without the turn bound (TurnHeuristic, a search of its own), and again with it only
     /// after this many expansions; 0: with it from the start.
     std::uint64_t turnBoundAfter{10000};
+    /// Only paths that may cost at most this are searched: a motion into a state whose g + h /
+    /// heuristicWeight exceeds it is not generated (the safety margin's second search, which
+    /// keeps its path only if it is at most 5 % dearer than the first). Infinite: no bound.
+    double costBound{std::numeric_limits<double>::infinity()};
+    /// CarFamily::solve(): the fallback searches (FallbackSchedule) may run when this one ends
+    /// without the goal (false: the safety margin's search, which only looks for a better path).
+    bool fallbacks{true};
     /// The map the search runs on, for the costs read off it (null: none, as on an OMPL
     /// application's own validity checker): its cost layer and its distance field.
     const FootprintChecker *map{nullptr};

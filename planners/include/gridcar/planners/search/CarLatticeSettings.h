@@ -72,6 +72,12 @@ struct CarLatticeSettings
     /// per metre at each pose, room the body's free slack in the distance field
     /// (FootprintChecker::freeSlack()); the body may still pass closer where it must. 0: off
     double clearance{0.0};
+    /// `safety_margin`, m: a hard margin. Where the path found passes nearer an obstacle than
+    /// this, it is searched again for the body grown by it on every side (CarLatticePlanner);
+    /// that path is kept if it costs at most 5 % more, else the first (a doorway the grown body
+    /// does not pass is not given up). Unset: auto, a quarter of the vehicle's width within
+    /// [0.05, 0.3] m; 0: off
+    std::optional<double> safetyMargin;
     TurnShape turns{TurnShape::Auto};  ///< `turns`
     /// `shortcut`: a found path shortened by the analytic expansion's curves where they are
     /// free, shorter and cheaper (auto: on with reverse=on)
