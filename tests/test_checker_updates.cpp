@@ -67,3 +67,50 @@ TEST(CheckerUpdates, AnUpdatedCheckerAnswersAsANewOne)
         }
     }
 }
+
+TEST(CheckerUpdates, AnotherCheckerCatchesUpFromTheChangesKept)
+{
+    // a second checker on the same grid and field (a body grown by 0.3 m, as the safety
+    // margin's) left behind by 5 edits, brought up to date from changesSince()
+    auto grid = std::make_shared<OccupancyGrid>(300, 220, 0.05);
+    auto field = std::make_shared<DistanceField>(*grid);
+    field->prepareUpdates(*grid);
+    VehicleParams grownBody = VehicleParams::preset("paper-c-robot");
+    grownBody.length += 0.6;
+    grownBody.width += 0.6;
+    FootprintChecker fc(grid, field, VehicleParams::preset("paper-c-robot"));
+    FootprintChecker grown(grid, field, grownBody);
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> cw(0, 289), ch(0, 209);
+    for (int edit = 0; edit < 5; ++edit)
+    {
+        const int c = cw(rng), r = ch(rng);
+        const CellWindow w{c, r, c + 10, r + 10};
+        addBox(*grid, w, CellState::Occupied);
+        fc.cellsChanged(w, field->update(*grid, w));
+    }
+    const auto changes = fc.changesSince(0);
+    ASSERT_TRUE(changes.has_value());
+    EXPECT_EQ(changes->size(), 5u);
+    EXPECT_EQ(fc.changesSince(3)->size(), 2u);
+    EXPECT_TRUE(fc.changesSince(5)->empty());
+    EXPECT_FALSE(fc.changesSince(6).has_value());  // a version it never had
+    for (const auto &[cells, moved] : *changes) grown.cellsChanged(cells, moved);
+    const FootprintChecker anew(std::make_shared<OccupancyGrid>(*grid), std::make_shared<DistanceField>(*grid),
+                                grownBody);
+    std::uniform_real_distribution<double> ux(0.0, grid->sizeX()), uy(0.0, grid->sizeY()), uyaw(-M_PI, M_PI);
+    int blocked = 0;
+    for (int i = 0; i < 3000; ++i)
+    {
+        const double x = ux(rng), y = uy(rng), yaw = uyaw(rng);
+        const bool valid = grown.isValid(x, y, yaw);
+        ASSERT_EQ(valid, anew.isValid(x, y, yaw)) << x << "," << y << "," << yaw;
+        ASSERT_EQ(grown.discsClearAtEveryYawAt(x, y), anew.discsClearAtEveryYawAt(x, y));
+        blocked += valid ? 0 : 1;
+    }
+    EXPECT_GT(blocked, 50);
+    // only the last 64 changes are kept: older versions cannot be caught up from
+    for (int edit = 0; edit < 70; ++edit) fc.cellsChanged({0, 0, 0, 0}, {0, 0, 0, 0});
+    EXPECT_FALSE(fc.changesSince(0).has_value());
+    EXPECT_EQ(fc.changesSince(fc.mapVersion() - 64)->size(), 64u);
+}

@@ -12,6 +12,12 @@
 
 namespace gridcar
 {
+namespace
+{
+/// FootprintChecker::changesSince() answers for this many cellsChanged() calls back.
+constexpr std::size_t kChangesKept = 64;
+}  // namespace
+
 FootprintChecker::Body FootprintChecker::makeBody(const VehicleParams &v, double margin)
 {
     Body b{};
@@ -248,6 +254,8 @@ void FootprintChecker::setDiscBits(const CellWindow &w)
 void FootprintChecker::cellsChanged(const CellWindow &cells, const CellWindow &field)
 {
     ++mapVersion_;
+    changes_.emplace_back(cells, field);
+    if (changes_.size() > kChangesKept) changes_.pop_front();
     const int W = grid_->width(), H = grid_->height();
     const auto clip = [&](const CellWindow &w) {
         return CellWindow{std::max(0, w.col0), std::max(0, w.row0), std::min(W - 1, w.col1), std::min(H - 1, w.row1)};
@@ -257,6 +265,13 @@ void FootprintChecker::cellsChanged(const CellWindow &cells, const CellWindow &f
         if (!w.empty()) setDiscBits(w);
     // a box covers boundary cells: a change there moves its 4-neighbours' boundary too
     if (exact_ && !cells.empty()) exact_->reset(clip({cells.col0 - 1, cells.row0 - 1, cells.col1 + 1, cells.row1 + 1}));
+}
+
+std::optional<std::vector<std::pair<CellWindow, CellWindow>>> FootprintChecker::changesSince(std::uint64_t since) const
+{
+    if (since > mapVersion_ || mapVersion_ - since > changes_.size()) return std::nullopt;
+    return std::vector<std::pair<CellWindow, CellWindow>>(changes_.end() - std::ptrdiff_t(mapVersion_ - since),
+                                                          changes_.end());
 }
 
 bool FootprintChecker::discsClearAtEveryYawAt(double x, double y) const

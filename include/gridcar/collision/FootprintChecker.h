@@ -10,7 +10,10 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <deque>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace fcl
@@ -218,6 +221,10 @@ public:
     /// How many times cellsChanged() was called: a planner that sees it move forgets what it
     /// learnt of the old map (not its set-up).
     std::uint64_t mapVersion() const { return mapVersion_; }
+    /// The windows (cells, field) of the cellsChanged() calls after version @p since, oldest
+    /// first, for another checker on the same grid and field (a body grown by a margin) to be
+    /// brought up to date the same way; nullopt if some are no longer kept (the last 64 are).
+    std::optional<std::vector<std::pair<CellWindow, CellWindow>>> changesSince(std::uint64_t since) const;
 
     /// The FCL boxes the exact check tests against over the whole map (they are made per tile on
     /// first use; this counts them all, a scan of the map).
@@ -285,6 +292,7 @@ private:
     struct ExactTiles;
     std::unique_ptr<ExactTiles> exact_;
     std::uint64_t mapVersion_{0};
+    std::deque<std::pair<CellWindow, CellWindow>> changes_;  ///< the last cellsChanged() windows
     mutable std::atomic<std::uint64_t> nFastFree_{0}, nFastCollision_{0}, nExact_{0}, nDiscFree_{0};
 };
 
