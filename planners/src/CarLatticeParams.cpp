@@ -96,7 +96,7 @@ std::vector<Field> makeFields()
                        "soft margin, m: motions nearer an obstacle than this cost more (0: off)"));
     f.push_back({"safety_margin", "0.:0.05:1.",
                  "hard margin, m: searched again for the body grown by it where the path passes nearer, kept if at "
-                 "most 5 % dearer (auto: a quarter of the width within 0.05-0.3 m; 0: off)",
+                 "most 5 % dearer (auto: 0.1 m, a quarter of the width if less; 0: off)",
                  [](S &s, const std::string &v) {
                      if (settings::switchWord(v) == "auto")
                          s.safetyMargin.reset();

@@ -70,8 +70,8 @@ public:
     /// With @p reach > 0, the primitives sampled for a body of that reach (the grown body of
     /// the safety margin) instead of the checker's.
     CarLatticeConfig carLatticeConfig(bool hybrid, double reach = 0.0) const;
-    /// The hard safety margin in use (m): `safety_margin` as set, else (auto) a quarter of the
-    /// vehicle's width within [0.05, 0.3] m; 0 for a point vehicle, a polygon footprint or an
+    /// The hard safety margin in use (m): `safety_margin` as set, else (auto) 0.1 m, or a
+    /// quarter of the vehicle's width if less; 0 for a point vehicle, a polygon footprint or an
     /// application's own validity checker (no distance field to grow the body in).
     double safetyMargin() const;
     /// True if the last solve()'s path came from the search for the body grown by the safety
@@ -91,7 +91,7 @@ private:
     void setupCar(CarFamily &family, const std::shared_ptr<CarCollision> &collision, double reach);
     /// The safety margin's pass (CarLatticeMargin.cpp): where @p run's path passes nearer an
     /// obstacle than @p margin, the same query for the grown body, on an expansion budget of
-    /// the first search's + 10 000 and within 5 % of its cost; its path replaces @p run's if it costs at most 5 % more.
+    /// twice the first search's + 2 000 and within 5 % of its cost; its path replaces @p run's if it costs at most 5 % more.
     void keepMargin(FamilyRun &run, double margin, const ompl::base::State *start, const CarLatticeQuery &terms,
                     const CarPostProcessing &post, const GoalTarget &goal, const LatticeCostModel &cost,
                     const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress);

@@ -75,8 +75,8 @@ struct CarLatticeSettings
     /// `safety_margin`, m: a hard margin. Where the path found passes nearer an obstacle than
     /// this, it is searched again for the body grown by it on every side (CarLatticePlanner);
     /// that path is kept if it costs at most 5 % more, else the first (a doorway the grown body
-    /// does not pass is not given up). Unset: auto, a quarter of the vehicle's width within
-    /// [0.05, 0.3] m; 0: off
+    /// does not pass is not given up). Unset: auto, 0.1 m, or a quarter of the vehicle's
+    /// width if less; 0: off
     std::optional<double> safetyMargin;
     TurnShape turns{TurnShape::Auto};  ///< `turns`
     /// `shortcut`: a found path shortened by the analytic expansion's curves where they are
