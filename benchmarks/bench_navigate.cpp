@@ -51,6 +51,7 @@ struct Options
     double limit{5.0};
     std::vector<std::string> only;
     bool stopToReplan{false};
+    std::vector<std::string> params;  ///< NAME=VALUE on corner-astar, in every plan
 };
 
 struct Tally
@@ -104,7 +105,8 @@ void run(const Options &o, const Area &a)
     if (!grid) return;
     const VehicleParams vehicle = VehicleParams::preset(a.area.vehicle);
     GridSetup setup = makeGridSetup(grid, vehicle);
-    auto planner = configurePlanner(setup.ss->getSpaceInformation(), {"corner-astar", {}, false, false});
+    const PlannerParams params = parsePlannerParams(o.params);
+    auto planner = configurePlanner(setup.ss->getSpaceInformation(), {"corner-astar", params, false, false});
     const auto pairs = randomPairs(*setup.checker, o.pairs, o.seed, a.area.lo, a.area.hi);
     std::mt19937 rng(o.seed);
     std::uniform_real_distribution<double> side(1.0, a.boxMax), at(0.3, 0.7);
@@ -113,6 +115,10 @@ void run(const Options &o, const Area &a)
     for (std::size_t k = 0; k < pairs.size(); ++k)
     {
         const Pose2 s = withFittingYaw(*setup.checker, pairs[k].first), g = pairs[k].second;
+        // the box's place and size drawn for every pair, planned or not, so that a pair the
+        // first plan misses (a time-limited plan on a loaded machine) leaves the others' boxes
+        const double f = at(rng);
+        double bx = side(rng), by = side(rng);
         const QueryResult first = runQuery(setup, planner, s, g, o.limit, true);
         if (first.status != ompl::base::PlannerStatus::EXACT_SOLUTION) continue;
         ++planned;
@@ -120,10 +126,8 @@ void run(const Options &o, const Area &a)
         std::vector<double> cum{0.0};
         for (std::size_t i = 1; i < first.path.size(); ++i)
             cum.push_back(cum.back() + std::hypot(first.path[i].x - first.path[i - 1].x, first.path[i].y - first.path[i - 1].y));
-        const double f = at(rng);
         const std::size_t mid = std::size_t(std::lower_bound(cum.begin(), cum.end(), f * cum.back()) - cum.begin());
         const Pose2 c = first.path[std::min(mid, first.path.size() - 1)];
-        double bx = side(rng), by = side(rng);
         const double reach = setup.checker->reach() + 1.0;
         MovingObstacle box = boxAt(c, bx, by);
         for (int shrink = 0; shrink < 20 && (near(box, s, reach) || near(box, g, reach)); ++shrink) box = boxAt(c, bx *= 0.8, by *= 0.8);
@@ -134,7 +138,7 @@ void run(const Options &o, const Area &a)
         for (int r = std::max(0, lo.row); r <= std::min(known->height() - 1, hi.row); ++r)
             for (int col = std::max(0, lo.col); col <= std::min(known->width() - 1, hi.col); ++col) known->set(col, r, CellState::Occupied);
         GridSetup ks = makeGridSetup(known, vehicle);
-        const QueryResult kq = runQuery(ks, configurePlanner(ks.ss->getSpaceInformation(), {"corner-astar", {}, false, false}), s, g,
+        const QueryResult kq = runQuery(ks, configurePlanner(ks.ss->getSpaceInformation(), {"corner-astar", params, false, false}), s, g,
                                         o.limit, true);
         const bool detour = kq.status == ompl::base::PlannerStatus::EXACT_SOLUTION;
         double knownTime = NAN;
@@ -155,6 +159,7 @@ void run(const Options &o, const Area &a)
             no.planTimeLimit = o.limit;
             no.sensor.range = a.range;
             no.replanRolling = !o.stopToReplan;
+            no.planner.params = params;
             const auto t0 = std::chrono::steady_clock::now();
             Navigator nav(grid, vehicle, no);
             const NavigationResult r = nav.run(s, g, true, sc);
@@ -208,6 +213,7 @@ int main(int argc, char **argv)
     app.add_option("--seed", o.seed, "Seed of the pairs, the boxes and OMPL's random numbers")->capture_default_str();
     app.add_option("--time-limit", o.limit, "Seconds per plan")->capture_default_str();
     app.add_option("--only", o.only, "Only these areas (willow-garage, mit-stata, tsudanuma) or vehicles");
+    app.add_option("--param", o.params, "NAME=VALUE set on corner-astar in every plan (repeatable), e.g. safety_margin=0");
     app.add_flag("--stop-to-replan", o.stopToReplan,
                  "Brake to a standstill before every replan (NavigationOptions::replanRolling off: the behaviour before "
                  "replanning while rolling)");
