@@ -91,7 +91,8 @@ private:
     void setupCar(CarFamily &family, const std::shared_ptr<CarCollision> &collision, double reach);
     /// The safety margin's pass (CarLatticeMargin.cpp): where @p run's path passes nearer an
     /// obstacle than @p margin, the same query for the grown body, on an expansion budget of
-    /// twice the first search's + 2 000 and within 5 % of its cost; its path replaces @p run's if it costs at most 5 % more.
+    /// twice the first search's + 2 000 and within 5 % of its cost; its path replaces @p run's
+    /// if it reached the goal.
     void keepMargin(FamilyRun &run, double margin, const ompl::base::State *start, const CarLatticeQuery &terms,
                     const CarPostProcessing &post, const GoalTarget &goal, const LatticeCostModel &cost,
                     const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress);
