@@ -4,6 +4,7 @@
 #include "gridcar/map/ParkingScenes.h"
 #include "gridcar/planners/PlannerFactory.h"
 #include "gridcar/planners/search/CarLattice.h"
+#include "gridcar/query/PlanQuery.h"
 #include "gridcar/spaces/Setup.h"
 
 #include <ompl/base/ScopedState.h>
@@ -169,6 +170,24 @@ inline Pose2 randomFree(const FootprintChecker &fc, std::mt19937 &rng)
         double yaw = 0;
         if (fc.fitsAtSomeHeading(g.cellCenterX(c), g.cellCenterY(r), 16, &yaw)) return {g.cellCenterX(c), g.cellCenterY(r), yaw};
     }
+}
+
+/// 20 m x 8 m at 0.05 m, free, with a block of cells [c0, c1] x [r0, r1] occupied (the margin
+/// tests' room: a pillar, or a wall across it).
+inline std::shared_ptr<OccupancyGrid> roomWithBlock(int c0, int r0, int c1, int r1)
+{
+    auto g = std::make_shared<OccupancyGrid>(400, 160, 0.05, CellState::Free);
+    for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c) g->set(c, r, CellState::Occupied);
+    return g;
+}
+
+/// One query by @p planner with @p params on @p setup, the goal's heading matched, 20 s.
+inline QueryResult planWith(GridSetup &setup, const std::string &planner, const PlannerParams &params,
+                            const Pose2 &start, const Pose2 &goal)
+{
+    const auto p = configurePlanner(setup.ss->getSpaceInformation(), {planner, params, false, false});
+    return runQuery(setup, p, start, goal, 20.0, false);
 }
 
 }  // namespace gridcar::test

@@ -1,6 +1,7 @@
 // The car lattice's soft clearance (`clearance`, m): a route keeps room from obstacles where the
 // map has room, a doorway the body fits through is still taken, and the setting is parsed like
 // the others.
+#include "PlannerTestUtil.h"
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/core/Errors.h"
 #include "gridcar/spaces/Setup.h"
@@ -16,33 +17,20 @@ namespace ob = ompl::base;
 
 namespace
 {
-/// 20 m x 8 m at 0.05 m, free, with a block of cells [c0, c1] x [r0, r1] occupied.
-std::shared_ptr<OccupancyGrid> roomWith(int c0, int r0, int c1, int r1)
-{
-    auto g = std::make_shared<OccupancyGrid>(400, 160, 0.05, CellState::Free);
-    for (int r = r0; r <= r1; ++r)
-        for (int c = c0; c <= c1; ++c) g->set(c, r, CellState::Occupied);
-    return g;
-}
-
-QueryResult plan(GridSetup &setup, const std::string &planner, const PlannerParams &params, const Pose2 &start,
-                 const Pose2 &goal)
-{
-    const auto p = configurePlanner(setup.ss->getSpaceInformation(), {planner, params, false, false});
-    return runQuery(setup, p, start, goal, 20.0, false);
-}
+using test::planWith;
+using test::roomWithBlock;
 }  // namespace
 
 TEST(Clearance, ARouteKeepsRoomFromAnObstacleWhereTheMapHasRoom)
 {
     // a pillar 1 m x 1.2 m across the straight line y = 4 between start and goal
-    auto grid = roomWith(190, 76, 209, 99);
+    auto grid = roomWithBlock(190, 76, 209, 99);
     GridSetup setup = makeGridSetup(grid, VehicleParams::preset("paper-c-robot"));
     const Pose2 start{2, 4, 0}, goal{18, 4, 0};
     for (const std::string name : {"corner-astar", "improved-astar"})
     {
-        const QueryResult tight = plan(setup, name, {}, start, goal);
-        const QueryResult roomy = plan(setup, name, {{"clearance", "0.6"}}, start, goal);
+        const QueryResult tight = planWith(setup, name, {}, start, goal);
+        const QueryResult roomy = planWith(setup, name, {{"clearance", "0.6"}}, start, goal);
         ASSERT_EQ(tight.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         ASSERT_EQ(roomy.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         EXPECT_TRUE(roomy.drivability.drivable) << name << ": " << roomy.drivability.reason;
@@ -59,15 +47,15 @@ TEST(Clearance, ADoorwayTheBodyFitsThroughIsStillTaken)
 {
     // a wall across the room at x = 10 m with a 0.7 m doorway (the robot is 0.4 m wide): the
     // soft margin of 0.5 m cannot be kept in it, and the only way is through it
-    auto grid = roomWith(200, 0, 203, 159);
+    auto grid = roomWithBlock(200, 0, 203, 159);
     for (int r = 73; r < 87; ++r)
         for (int c = 200; c <= 203; ++c) grid->set(c, r, CellState::Free);
     GridSetup setup = makeGridSetup(grid, VehicleParams::preset("paper-c-robot"));
     const Pose2 start{3, 2, 0}, goal{17, 6, 0};
     for (const std::string name : {"corner-astar", "improved-astar"})
     {
-        const QueryResult plain = plan(setup, name, {}, start, goal);
-        const QueryResult kept = plan(setup, name, {{"clearance", "0.5"}}, start, goal);
+        const QueryResult plain = planWith(setup, name, {}, start, goal);
+        const QueryResult kept = planWith(setup, name, {{"clearance", "0.5"}}, start, goal);
         ASSERT_EQ(plain.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         ASSERT_EQ(kept.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         EXPECT_TRUE(kept.drivability.drivable) << name << ": " << kept.drivability.reason;
@@ -77,7 +65,7 @@ TEST(Clearance, ADoorwayTheBodyFitsThroughIsStillTaken)
 
 TEST(Clearance, IsACarLatticeSettingInMetres)
 {
-    auto grid = roomWith(0, 0, 0, 0);
+    auto grid = roomWithBlock(0, 0, 0, 0);
     GridSetup setup = makeGridSetup(grid, VehicleParams::preset("paper-c-robot"));
     const auto si = setup.ss->getSpaceInformation();
     const auto p = configurePlanner(si, {"corner-astar", {{"clearance", "0.3"}}, false, false});

@@ -2,6 +2,7 @@
 // an obstacle than the margin, it is searched again for the body grown by it and kept if at most
 // 5 % dearer; a doorway narrower than the grown body is still taken; the setting is parsed like
 // the others.
+#include "PlannerTestUtil.h"
 #include "gridcar/query/PlanQuery.h"
 #include "gridcar/core/Errors.h"
 #include "gridcar/spaces/Setup.h"
@@ -16,33 +17,20 @@ namespace ob = ompl::base;
 
 namespace
 {
-/// 20 m x 8 m at 0.05 m, free, with a block of cells [c0, c1] x [r0, r1] occupied.
-std::shared_ptr<OccupancyGrid> roomWith(int c0, int r0, int c1, int r1)
-{
-    auto g = std::make_shared<OccupancyGrid>(400, 160, 0.05, CellState::Free);
-    for (int r = r0; r <= r1; ++r)
-        for (int c = c0; c <= c1; ++c) g->set(c, r, CellState::Occupied);
-    return g;
-}
-
-QueryResult plan(GridSetup &setup, const std::string &planner, const PlannerParams &params, const Pose2 &start,
-                 const Pose2 &goal)
-{
-    const auto p = configurePlanner(setup.ss->getSpaceInformation(), {planner, params, false, false});
-    return runQuery(setup, p, start, goal, 20.0, false);
-}
+using test::planWith;
+using test::roomWithBlock;
 }  // namespace
 
 TEST(SafetyMargin, APathKeepsTheMarginWhereTheMapHasRoom)
 {
     // a pillar 1 m x 1.2 m across the straight line y = 4 between start and goal
-    auto grid = roomWith(190, 76, 209, 99);
+    auto grid = roomWithBlock(190, 76, 209, 99);
     GridSetup setup = makeGridSetup(grid, VehicleParams::preset("paper-c-robot"));
     const Pose2 start{2, 4, 0}, goal{18, 4, 0};
     for (const std::string name : {"corner-astar", "improved-astar"})
     {
-        const QueryResult off = plan(setup, name, {{"safety_margin", "0"}}, start, goal);
-        const QueryResult kept = plan(setup, name, {{"safety_margin", "0.3"}}, start, goal);
+        const QueryResult off = planWith(setup, name, {{"safety_margin", "0"}}, start, goal);
+        const QueryResult kept = planWith(setup, name, {{"safety_margin", "0.3"}}, start, goal);
         ASSERT_EQ(off.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         ASSERT_EQ(kept.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         EXPECT_TRUE(kept.drivability.drivable) << name << ": " << kept.drivability.reason;
@@ -59,15 +47,15 @@ TEST(SafetyMargin, ADoorwayNarrowerThanTheGrownBodyIsStillTaken)
 {
     // a wall across the room at x = 10 m with a 0.7 m doorway: the robot (0.4 m wide) fits, the
     // body grown by 0.3 m (1.0 m) does not, and the only way is through it
-    auto grid = roomWith(200, 0, 203, 159);
+    auto grid = roomWithBlock(200, 0, 203, 159);
     for (int r = 73; r < 87; ++r)
         for (int c = 200; c <= 203; ++c) grid->set(c, r, CellState::Free);
     GridSetup setup = makeGridSetup(grid, VehicleParams::preset("paper-c-robot"));
     const Pose2 start{3, 2, 0}, goal{17, 6, 0};
     for (const std::string name : {"corner-astar", "improved-astar"})
     {
-        const QueryResult off = plan(setup, name, {{"safety_margin", "0"}}, start, goal);
-        const QueryResult kept = plan(setup, name, {{"safety_margin", "0.3"}}, start, goal);
+        const QueryResult off = planWith(setup, name, {{"safety_margin", "0"}}, start, goal);
+        const QueryResult kept = planWith(setup, name, {{"safety_margin", "0.3"}}, start, goal);
         ASSERT_EQ(off.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         ASSERT_EQ(kept.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
         EXPECT_TRUE(kept.drivability.drivable) << name << ": " << kept.drivability.reason;
@@ -78,7 +66,7 @@ TEST(SafetyMargin, ADoorwayNarrowerThanTheGrownBodyIsStillTaken)
 
 TEST(SafetyMargin, IsACarLatticeSettingInMetresOrAuto)
 {
-    auto grid = roomWith(0, 0, 0, 0);
+    auto grid = roomWithBlock(0, 0, 0, 0);
     GridSetup setup = makeGridSetup(grid, VehicleParams::preset("paper-c-robot"));
     const auto si = setup.ss->getSpaceInformation();
     EXPECT_EQ(configurePlanner(si, {"corner-astar", {}, false, false})->params().getParam("safety_margin")->getValue(),
