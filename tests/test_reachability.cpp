@@ -125,3 +125,37 @@ TEST(Reachability, NeverSeparatesPosesAPlannerJoins)
     EXPECT_GT(joinedByPlanner, 5);
     EXPECT_GT(separated, 0);
 }
+
+// A goal in a room whose wall is one cell thick: the car lattice's 2D heuristic joins the room
+// to the rest (its graph's long steps pass over the wall between two free nodes), so the search
+// would exhaust the start's whole region (for the point robot, 40 m x 20 m of 0.1 m cells at 16
+// headings) before the proof after it. The proof asked once the search has run a while answers
+// instead, after a fraction of the expansions that exhausting the region takes: the goal
+// unreachable, the path to the state nearest it that the search had reached.
+TEST(Reachability, AGoalShutBehindAThinWallIsAnsweredWithoutExhaustingTheStartsRegion)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    auto g = std::make_shared<OccupancyGrid>(400, 200, 0.1, CellState::Free);
+    for (int r = 0; r < g->height(); ++r)
+        for (int c = 0; c < g->width(); ++c)
+        {
+            const double x = g->cellCenterX(c), y = g->cellCenterY(r);
+            const bool inOuter = x > 25 && x < 35 && y > 5 && y < 15, inInner = x > 25.1 && x < 34.9 && y > 5.1 && y < 14.9;
+            if (inOuter && !inInner) g->set(c, r, CellState::Occupied);
+        }
+    GridSetup s = makeGridSetup(g, VehicleParams::preset("point"));
+    const Pose2 start{5.0, 10.0, 0.0}, goal{30.0, 10.0, 0.0};
+    ASSERT_EQ(s.checker->reachability(start, false, goal, false, std::size_t(1) << 22).verdict, Reach::Separated);
+    for (const char *name : {"corner-astar", "improved-astar"})
+    {
+        SCOPED_TRACE(name);
+        auto p = makePlanner(s.ss->getSpaceInformation(), name);
+        const QueryResult res = runQuery(s, p, start, goal, 30.0);
+        EXPECT_EQ(res.status, ob::PlannerStatus::APPROXIMATE_SOLUTION) << res.status.asString();
+        EXPECT_NE(res.notExactBecause.find("the goal is unreachable"), std::string::npos) << res.notExactBecause;
+        EXPECT_NE(res.notExactBecause.find("round the goal"), std::string::npos) << res.notExactBecause;
+        EXPECT_FALSE(res.path.empty());
+        // (the region holds some 70 000 nodes x 16 headings)
+        EXPECT_LT(res.expanded, 20000u) << "the start's region was searched out before the proof";
+    }
+}

@@ -16,6 +16,17 @@
 
 namespace gridcar
 {
+namespace
+{
+/// The proof a search that runs long asks (CarLatticeSearch::provenUnreachable()), after this
+/// many expansions (most queries end before: they never pay for it)
+constexpr std::uint64_t kProofAfter = 2000;
+/// and within this many cells: a region of up to about half as many shut off round either end
+/// is found (the two breadth-first searches run in turns), a room of 18 x 18 m at 0.05 m; on
+/// the 24 M-cell map it costs about 3 ms where the ends are joined
+constexpr std::size_t kQuickProofCells = std::size_t(1) << 18;
+}  // namespace
+
 void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision, const CarLatticeConfig *fallback,
                       const CarLatticeConfig *forPoses)
 {
@@ -82,7 +93,26 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     const auto t0 = std::chrono::steady_clock::now();
     // a goal heading to meet: the primitive set for manoeuvres, where there is one
     CarLatticeSearch *main = q.goalYawTolerance >= 0 && forPoses_ ? forPoses_.get() : search_.get();
-    CarLatticeResult r = main->run(q, cost, cancelled, progress);
+    // a goal (or start) shut in a small region is proven cut off once the search has run for
+    // kProofAfter expansions, and the search stops there: the approximate answer is the state
+    // nearest the goal it has explored, with the reason (as when the proof below answers after
+    // the search). The 2D graph of the heuristic may join that region to the rest across a wall
+    // thinner than the lattice's cell, and the search would exhaust the start's region first.
+    std::string proven;
+    bool startShutIn = false, asked = !q.fallbacks;
+    std::atomic<std::uint64_t> seen{0};
+    const std::function<bool()> stop = [&] {
+        const std::uint64_t n = seen.load(std::memory_order_relaxed);
+        if (progress) progress->store(n, std::memory_order_relaxed);
+        if (!asked && n >= kProofAfter)
+        {
+            asked = true;
+            proven = CarLatticeSearch::provenUnreachable(q, startShutIn, kQuickProofCells);
+        }
+        return !proven.empty() || cancelled();
+    };
+    CarLatticeResult r = main->run(q, cost, stop, &seen);
+    if (!proven.empty() && r.outcome == SearchOutcome::Cancelled) r.outcome = SearchOutcome::Exhausted;
     last_ = main;
     // Where the search from the start ends without the goal (not stopped), the time left goes
     // to the fallback searches (FallbackSchedule: the order and the budgets); an answer is kept
@@ -130,9 +160,7 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
         return ended;
     };
     // the fallbacks run only where a path may exist (FootprintChecker::reachability())
-    std::string proven;
-    bool startShutIn = false;
-    if (q.fallbacks && r.outcome == SearchOutcome::Exhausted && !r.exact && r.unreachable.empty() &&
+    if (q.fallbacks && proven.empty() && r.outcome == SearchOutcome::Exhausted && !r.exact && r.unreachable.empty() &&
         !schedule.stages().empty())
         proven = CarLatticeSearch::provenUnreachable(q, startShutIn);
     if (q.fallbacks && r.outcome != SearchOutcome::Cancelled && r.unreachable.empty() && proven.empty())

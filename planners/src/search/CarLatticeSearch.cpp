@@ -284,15 +284,14 @@ void CarLatticeSearch::setUpTurnHeuristic(const LatticeCostModel &cost,
 
 namespace gridcar
 {
-std::string CarLatticeSearch::provenUnreachable(const CarLatticeQuery &q, bool &startShutIn)
+std::string CarLatticeSearch::provenUnreachable(const CarLatticeQuery &q, bool &startShutIn, std::size_t maxCells)
 {
     // one goal position (a GoalState, or a PositionGoal within a micrometre: the reference
     // point at the goal, at its heading or any) on gridcar's checker
     if (!q.map || !q.aim || !q.shoot) return "";
     if (q.inGoal && !(q.goalPositionTolerance >= 0 && q.goalPositionTolerance <= 1e-6)) return "";
-    constexpr std::size_t kProofCells = std::size_t(1) << 22;
     const FootprintChecker::Reach r =
-        q.map->reachability(q.start, q.freeStartHeading, q.goal, q.goalYawTolerance != 0, kProofCells);
+        q.map->reachability(q.start, q.freeStartHeading, q.goal, q.goalYawTolerance != 0, maxCells);
     if (r.verdict != FootprintChecker::Reach::Separated) return "";
     const double res = q.map->grid().resolution();
     // (a search from the goal back has its ends swapped)

@@ -292,7 +292,9 @@ public:
     /// Fast failure (see the class): why the goal of @p q is proven unreachable, or empty
     /// (@p startShutIn: the start's free space is the one shut off). Asked by run() where the
     /// 2D graph does not join the ends, and by the planner before its fallback searches.
-    static std::string provenUnreachable(const CarLatticeQuery &q, bool &startShutIn);
+    /// The proof visits at most @p maxCells cells (Unknown past them: "").
+    static std::string provenUnreachable(const CarLatticeQuery &q, bool &startShutIn,
+                                         std::size_t maxCells = std::size_t(1) << 22);
 
 private:
     friend struct CarExpander;
