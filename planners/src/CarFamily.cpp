@@ -23,7 +23,7 @@ namespace
 constexpr std::uint64_t kProofAfter = 2000;
 /// and within this many cells: a region of up to about half as many shut off round either end
 /// is found (the two breadth-first searches run in turns), a room of 18 x 18 m at 0.05 m; on
-/// the 24 M-cell map it costs about 3 ms where the ends are joined
+/// the 24 M-cell map it costs a few ms where the ends are joined
 constexpr std::size_t kQuickProofCells = std::size_t(1) << 18;
 }  // namespace
 
