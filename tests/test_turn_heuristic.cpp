@@ -296,3 +296,68 @@ TEST(TurnHeuristic, ShotEndedPathsAndTheRestartKeepTheBoundBelowAndCountEveryExp
     std::printf("shot-ended paths: the bound at the start at most %.2f above the path found (allowance %.2f), %d queries\n",
                 worstOver, allowance, compared);
 }
+
+// The safety margin's second search (the body grown by the margin, the same query) reads the
+// first search's 2D distances and turn bound (CarLatticeQuery::boundsFrom), which bound the
+// grown body's paths too: the bounds read are the first search's, and the paths cost about
+// what the grown search finds with its own (both close states for good). A first search that
+// last ran another query is not read: the run is the one without it.
+TEST(TurnHeuristic, AGrownBodysSearchReadsTheFirstSearchsBoundsOfTheSameQueryOnly)
+{
+    CornerLikeCost cost;
+    const auto never = [] { return false; };
+    int compared = 0;
+    double borrowedCost = 0, ownCost = 0;
+    std::uint64_t borrowedExpanded = 0, ownExpanded = 0;
+    for (unsigned seed = 1; seed <= 4; ++seed)
+    {
+        RandomScene scene(seed);
+        VehicleParams v = scene.fc.vehicle();
+        const double margin = 0.05;
+        v.length += 2 * margin;
+        v.width += 2 * margin;
+        v.rearOverhang += margin;
+        const FootprintChecker grownFc(scene.grid, scene.field, v);
+        CarLatticeSearch grown(grownFc, std::make_shared<const CarLattice>(test::randomBlocksLattice(grownFc)));
+        std::mt19937 rng(seed * 13);
+        for (int k = 0; k < 8; ++k)
+        {
+            CarLatticeQuery q;
+            q.start = test::randomFree(grownFc, rng);
+            q.goal = test::randomFree(grownFc, rng);
+            q.shoot = false;
+            const double radius = 1.5 * scene.lattice->cell();
+            q.inGoal = [&](const Pose2 &p) { return std::hypot(p.x - q.goal.x, p.y - q.goal.y) <= radius; };
+            q.goalPositionTolerance = radius;
+            q.turnBoundAfter = 0;
+            if (!scene.search.run(q, cost, never).exact) continue;
+            CarLatticeQuery b = q;
+            b.boundsFrom = &scene.search;
+            const CarLatticeResult r = grown.run(b, cost, never);
+            EXPECT_GT(r.turnBoundStates, 0u);
+            EXPECT_EQ(grown.turnBoundAt(0, 0, 0, cost), scene.search.turnBoundAt(0, 0, 0, cost));
+            EXPECT_EQ(grown.boundStates(), scene.search.boundStates());
+            EXPECT_EQ(grown.heuristicAt(3, 2), scene.search.heuristicAt(3, 2));
+            const CarLatticeResult own = grown.run(q, cost, never);
+            ASSERT_EQ(r.exact, own.exact) << "seed " << seed << " query " << k;
+            if (!own.exact) continue;
+            ++compared;
+            borrowedCost += r.cost;
+            ownCost += own.cost;
+            borrowedExpanded += r.expanded;
+            ownExpanded += own.expanded;
+            // the first search's last query is another (its start elsewhere): not read
+            CarLatticeQuery other = q;
+            other.start = test::randomFree(grownFc, rng);
+            scene.search.run(other, cost, never);
+            const CarLatticeResult unread = grown.run(b, cost, never);
+            EXPECT_EQ(unread.cost, own.cost) << "seed " << seed << " query " << k;
+            EXPECT_EQ(unread.expanded, own.expanded) << "seed " << seed << " query " << k;
+        }
+    }
+    EXPECT_GE(compared, 8);
+    EXPECT_LE(borrowedCost, ownCost * 1.02);
+    std::printf("grown body: cost %.1f with the first search's bounds, %.1f with its own; %llu and %llu expansions\n",
+                borrowedCost, ownCost, static_cast<unsigned long long>(borrowedExpanded),
+                static_cast<unsigned long long>(ownExpanded));
+}

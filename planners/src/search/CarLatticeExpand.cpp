@@ -266,21 +266,24 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     CarLatticeResult out;
     const double c = lattice_->cell();
     const int H = lattice_->neighbourCount();  // the 2D graph's steps (the lattice's headings)
-    if (!h2d_)
+    // (the safety margin's search reads its first search's bounds: borrowBounds())
+    const bool borrowed = borrowBounds(q, cost, cancelled);
+    if (!borrowed && !ownH2d_)
     {
         // made once, its node storage reused by every run (ObstacleHeuristic::reset)
         std::vector<std::array<int, 2>> steps;
         for (int h = 0; h < H; ++h) steps.push_back({lattice_->vi(h), lattice_->vj(h)});
-        h2d_ = std::make_unique<ObstacleHeuristic>(steps, c, [this](int i, int j) { return fitsAtNode(i, j); });
+        ownH2d_ = std::make_unique<ObstacleHeuristic>(steps, c, [this](int i, int j) { return fitsAtNode(i, j); });
         // a step along heading k is lined up with axis k mod (H / 2): the car fits there at
         // that heading or its reverse
         std::vector<int> axis;
         for (int h = 0; h < H; ++h) axis.push_back(h % (H / 2));
-        h2d_->setAxisTest(axis, [this, H](int i, int j) {
+        ownH2d_->setAxisTest(axis, [this, H](int i, int j) {
             const std::array<double, 2> p = nodeXY(i, j);  // (the axes' yaws are the collision model's)
             return std::uint16_t(col_->axesStanding(p[0], p[1], H / 2));
         });
     }
+    if (!borrowed) h2d_ = ownH2d_.get();
     h2d_->setCancel(cancelled);
     cancelled_ = &cancelled;
     std::vector<double> yaws;
@@ -300,8 +303,12 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
             const double d = std::hypot(i * c - gx, j * c - gy);
             if (d <= seedRadius_) seeds.push_back({{i, j}, d});
         }
-    h2d_->reset(i0_, j0_, ni_, nj_, seeds, 0, 0);
-    use2d_ = q.aim;
+    if (!borrowed)
+    {
+        h2d_->reset(i0_, j0_, ni_, nj_, seeds, 0, 0);
+        use2d_ = q.aim;
+        useTurn_ = false;
+    }
     if (use2d_ && h2d_->distance(0, 0) == kInf)
     {
         use2d_ = false;
@@ -311,9 +318,8 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
     // the turn bound costs a search of its own over 8 axes a node: worth it where the search
     // without it runs long (corners it does not see), not on the many queries it ends quickly;
     // progress counts both searches' expansions (a fallback stage's budget reads it)
-    const bool turnWanted = turnBoundApplies(q, cost);
+    const bool turnWanted = !useTurn_ && turnBoundApplies(q, cost);  // (not when one is borrowed)
     const bool turnLater = turnWanted && q.turnBoundAfter > 0;
-    useTurn_ = false;
     if (turnWanted && !turnLater) setUpTurnHeuristic(cost, seeds, cancelled);
     std::atomic<std::uint64_t> count{0};
     std::uint64_t before = 0;

@@ -243,6 +243,37 @@ bool CarLatticeSearch::turnBoundApplies(const CarLatticeQuery &q, const LatticeC
     return !q.inGoal || (q.goalPositionTolerance >= 0 && q.goalPositionTolerance <= seedRadius_);
 }
 
+bool CarLatticeSearch::borrowBounds(const CarLatticeQuery &q, const LatticeCostModel &cost,
+                                    const std::function<bool()> &cancelled)
+{
+    CarLatticeSearch *d = q.boundsFrom;
+    // the same graph (steps, cell, node or hybrid states, measured ratio) over the same frame
+    // and box, searched by the donor's last run from the same goal, unweighted (the weights
+    // would be the donor's cost model's)
+    if (!d || d == this || !d->h2d_ || !d->use2d_ || !q.aim || cost.weighted() || d->query_.goal.x != q.goal.x ||
+        d->query_.goal.y != q.goal.y || d->ratio_ != ratio_ || d->lattice_->cell() != lattice_->cell() ||
+        d->lattice_->hybrid() != lattice_->hybrid() || d->lattice_->neighbourCount() != lattice_->neighbourCount())
+        return false;
+    for (int h = 0; h < lattice_->neighbourCount(); ++h)
+        if (d->lattice_->vi(h) != lattice_->vi(h) || d->lattice_->vj(h) != lattice_->vj(h)) return false;
+    if (d->ox_ != ox_ || d->oy_ != oy_ || d->phi_ != phi_ || d->i0_ != i0_ || d->j0_ != j0_ || d->ni_ != ni_ ||
+        d->nj_ != nj_)
+        return false;
+    h2d_ = d->h2d_;
+    use2d_ = true;
+    seedRadius_ = 1.5 * lattice_->cell();  // (as run() sets it)
+    useTurn_ = d->useTurn_ && d->turn_ && turnBoundApplies(q, cost);
+    turn_ = useTurn_ ? d->turn_ : ownTurn_.get();
+    // their searches resume from here on: they poll this run's cancel
+    h2d_->setCancel(cancelled);
+    if (useTurn_)
+    {
+        turn_->setCancel(cancelled);
+        d->fromStart_->setCancel(cancelled);
+    }
+    return true;
+}
+
 void CarLatticeSearch::setUpTurnHeuristic(const LatticeCostModel &cost,
                                           const std::vector<std::pair<std::array<int, 2>, double>> &seeds,
                                           const std::function<bool()> &cancelled)
@@ -250,11 +281,11 @@ void CarLatticeSearch::setUpTurnHeuristic(const LatticeCostModel &cost,
     const double perRad = cost.minTurnCostPerRad(), perMetre = cost.minCostPerMetre();
     useTurn_ = false;
     const int H = lattice_->neighbourCount();
-    if (!turn_)
+    if (!ownTurn_)
     {
         std::vector<std::array<int, 2>> steps;
         for (int h = 0; h < H; ++h) steps.push_back({lattice_->vi(h), lattice_->vj(h)});
-        turn_ = std::make_unique<TurnHeuristic>(steps, lattice_->cell());
+        ownTurn_ = std::make_unique<TurnHeuristic>(steps, lattice_->cell());
         // the same 2D graph searched from the start, its node tests h2d_'s (asked once)
         fromStart_ = std::make_unique<ObstacleHeuristic>(steps, lattice_->cell(),
                                                          [this](int i, int j) { return h2d_->traversable(i, j); });
@@ -267,6 +298,7 @@ void CarLatticeSearch::setUpTurnHeuristic(const LatticeCostModel &cost,
             return m;
         });
     }
+    turn_ = ownTurn_.get();
     turn_->setCancel(cancelled);
     fromStart_->setCancel(cancelled);
     // directed at the goal's nearest node

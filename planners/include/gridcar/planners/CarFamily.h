@@ -49,6 +49,8 @@ public:
                const CarLatticeConfig *fallback = nullptr, const CarLatticeConfig *forPoses = nullptr);
     /// The search of the last query (the first one before any; null before setup()).
     const CarLatticeSearch *search() const { return last_ ? last_ : search_.get(); }
+    /// The search of the last query, to read its bounds (CarLatticeQuery::boundsFrom; null before any).
+    CarLatticeSearch *lastSearch() { return last_; }
 
     /// One query from @p start to @p goal: @p terms carries the settings and what they resolve
     /// to (its start and goal fields are set here), @p post what is done to the path found.
@@ -67,7 +69,7 @@ private:
     /// lattice for a goal heading to meet (null: search_)
     std::unique_ptr<CarLatticeSearch> search_, fallback_, fine_, forPoses_;
     CarLatticeConfig fineConfig_;  ///< fine_'s primitive set (fine_ is built on first use)
-    const CarLatticeSearch *last_{nullptr};
+    CarLatticeSearch *last_{nullptr};
 };
 
 }  // namespace gridcar

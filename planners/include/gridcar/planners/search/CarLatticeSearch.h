@@ -28,6 +28,8 @@
 
 namespace gridcar
 {
+class CarLatticeSearch;
+
 /// The cost of driving along the lattice; the search core orders states by g + h unless
 /// customPriority().
 class LatticeCostModel
@@ -131,6 +133,12 @@ struct CarLatticeQuery : CarGoalTerms
     /// CarFamily::solve(): the fallback searches (FallbackSchedule) may run when this one ends
     /// without the goal (false: the safety margin's search, which only looks for a better path).
     bool fallbacks{true};
+    /// The search that ran this query last (same start, goal and cost model) for a body inside
+    /// this one's (the safety margin's first search): where it laid the same lattice graph over
+    /// the same frame, its 2D distances and turn bound hold here too (every path of this body
+    /// is one of that body's), and this run reads them, resuming their searches, instead of
+    /// searching the 2D graph again; weaker bounds than this body's own (null: its own).
+    CarLatticeSearch *boundsFrom{nullptr};
     /// The map the search runs on, for the costs read off it (null: none, as on an OMPL
     /// application's own validity checker): its cost layer and its distance field.
     const FootprintChecker *map{nullptr};
@@ -249,6 +257,12 @@ public:
     const CarCollision &collision() const { return *col_; }
     /// Largest open-space 2D-graph distance over primitive length (>= 1).
     double heuristicRatio() const { return ratio_; }
+    /// The states the last run's bounds closed: 2D nodes and (node, axis) states of the turn
+    /// bound (what reading them through CarLatticeQuery::boundsFrom saves another search).
+    std::size_t boundStates() const
+    {
+        return (h2d_ ? h2d_->closedCount() : 0) + (useTurn_ && turn_ ? turn_->closedCount() : 0);
+    }
 
     CarLatticeResult run(const CarLatticeQuery &q, const LatticeCostModel &cost, const std::function<bool()> &cancelled,
                          std::atomic<std::uint64_t> *progress = nullptr);
@@ -345,10 +359,12 @@ private:
     double ox_{0}, oy_{0}, phi_{0}, cphi_{1}, sphi_{0};
     int i0_{0}, j0_{0}, ni_{1}, nj_{1};
     CarLatticeQuery query_;
-    std::unique_ptr<ObstacleHeuristic> h2d_;
+    std::unique_ptr<ObstacleHeuristic> ownH2d_;
+    ObstacleHeuristic *h2d_{nullptr};  ///< the last run's 2D distances: ownH2d_ or borrowed (borrowBounds())
     bool use2d_{true};
     /// the 2D heuristic with turning counted (cost models that charge turning), kept across runs
-    std::unique_ptr<TurnHeuristic> turn_;
+    std::unique_ptr<TurnHeuristic> ownTurn_;
+    TurnHeuristic *turn_{nullptr};  ///< the last run's: ownTurn_ or borrowed (borrowBounds())
     std::unique_ptr<ObstacleHeuristic> fromStart_;  ///< turn_'s guide: 2D distances from the start
     bool useTurn_{false};
     /// True if the turn bound applies to the query: a cost model that charges turning, on a
@@ -356,6 +372,10 @@ private:
     bool turnBoundApplies(const CarLatticeQuery &q, const LatticeCostModel &cost) const;
     /// Resets turn_ for this run (after h2d_; turnBoundApplies()): sets useTurn_ (false when
     /// the box is too large).
+    /// run() with CarLatticeQuery::boundsFrom: points h2d_ (and turn_, where that search used
+    /// its turn bound and this run's cost model applies one) at that search's when it laid the
+    /// same graph over the same frame from the same goal (true).
+    bool borrowBounds(const CarLatticeQuery &q, const LatticeCostModel &cost, const std::function<bool()> &cancelled);
     void setUpTurnHeuristic(const LatticeCostModel &cost, const std::vector<std::pair<std::array<int, 2>, double>> &seeds,
                             const std::function<bool()> &cancelled);
     double seedRadius_{0};
