@@ -118,6 +118,7 @@ void CarLatticePlanner::keepMargin(FamilyRun &run, double margin, const ompl::ba
     if (CarLatticeSearch *first = car_.lastSearch(); first && first->boundStates() > kBoundStatesPerExpansion * run.expanded)
         bounded.boundsFrom = first;
     FamilyRun g = grownCar_.solve(si_, start, bounded, post, goal, cost, stop, &count);
+    grownSearched_ = true;
     if (progress) *progress += g.expanded;
     run.expanded += g.expanded;
     run.searchSeconds += g.searchSeconds;

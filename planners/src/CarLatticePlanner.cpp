@@ -44,7 +44,7 @@ void CarLatticePlanner::setupFamily(const std::shared_ptr<CarCollision> &collisi
     // settings, the map or the vehicle may have changed)
     grown_.reset();
     grownCollision_.reset();
-    lastGrown_ = false;
+    lastGrown_ = grownSearched_ = false;
 }
 
 void CarLatticePlanner::setupCar(CarFamily &family, const std::shared_ptr<CarCollision> &collision, double reach)
@@ -79,7 +79,7 @@ FamilyRun CarLatticePlanner::searchFamily(const ompl::base::State *start, const 
                   "raw mode, on gridcar's validity checker): it has no effect",
                   getName().c_str());
     const CarPostProcessing post{shortcutting() ? kShortcutCurves : 0, curvatureRate(), 1.0 / turningRadius()};
-    lastGrown_ = false;
+    lastGrown_ = grownSearched_ = false;
     FamilyRun run = car_.solve(si_, start, terms, post, goal, *cost, cancelled, progress);
     if (const double margin = safetyMargin(); margin > 0 && run.end.reached && run.end.path && !cancelled())
         keepMargin(run, margin, start, terms, post, goal, *cost, cancelled, progress);
@@ -88,7 +88,9 @@ FamilyRun CarLatticePlanner::searchFamily(const ompl::base::State *start, const 
 
 void CarLatticePlanner::familyData(ompl::base::PlannerData &data, PlannerDataStates &states) const
 {
-    (lastGrown_ ? grownCar_ : car_).plannerData(data, states);
+    // both searches' explored states where the margin's search ran
+    car_.plannerData(data, states);
+    if (grownSearched_) grownCar_.plannerData(data, states);
 }
 
 CarLatticeConfig CarLatticePlanner::carLatticeConfig() const

@@ -108,6 +108,7 @@ private:
     double grownBy_{0.0};
     std::uint64_t grownVersion_{0};  ///< checker_'s mapVersion() grown_ was made on
     bool lastGrown_{false};
+    bool grownSearched_{false};  ///< the last query ran the grown body's search (its explored states drawn too)
 };
 
 }  // namespace gridcar
