@@ -370,12 +370,12 @@ private:
     /// True if the turn bound applies to the query: a cost model that charges turning, on a
     /// node lattice, an aimed search whose goal region the seeds stand for.
     bool turnBoundApplies(const CarLatticeQuery &q, const LatticeCostModel &cost) const;
-    /// Resets turn_ for this run (after h2d_; turnBoundApplies()): sets useTurn_ (false when
-    /// the box is too large).
     /// run() with CarLatticeQuery::boundsFrom: points h2d_ (and turn_, where that search used
     /// its turn bound and this run's cost model applies one) at that search's when it laid the
     /// same graph over the same frame from the same goal (true).
     bool borrowBounds(const CarLatticeQuery &q, const LatticeCostModel &cost, const std::function<bool()> &cancelled);
+    /// Resets turn_ for this run (after h2d_; turnBoundApplies()): sets useTurn_ (false when
+    /// the box is too large).
     void setUpTurnHeuristic(const LatticeCostModel &cost, const std::vector<std::pair<std::array<int, 2>, double>> &seeds,
                             const std::function<bool()> &cancelled);
     double seedRadius_{0};
