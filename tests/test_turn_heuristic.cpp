@@ -186,6 +186,21 @@ struct CornerLikeCost : LatticeCostModel
     bool turnBound() const override { return bound; }
     bool bound{true};  ///< corner-astar's `turn_heuristic`
 };
+
+/// A seeded query between two poses where the body of @p fc fits, to the goal region of the
+/// lattice's seed radius (no analytic shot), with the turn bound from the start.
+CarLatticeQuery regionQuery(const FootprintChecker &fc, double cell, std::mt19937 &rng)
+{
+    CarLatticeQuery q;
+    q.start = test::randomFree(fc, rng);
+    q.goal = test::randomFree(fc, rng);
+    q.shoot = false;
+    const double radius = 1.5 * cell;
+    q.inGoal = [g = q.goal, radius](const Pose2 &p) { return std::hypot(p.x - g.x, p.y - g.y) <= radius; };
+    q.goalPositionTolerance = radius;
+    q.turnBoundAfter = 0;
+    return q;
+}
 }  // namespace
 
 // With a cost that charges turning, the turn bound at the start stays below the optimum that
@@ -205,14 +220,7 @@ TEST(TurnHeuristic, CornerCostSearchFindsNearOptimalPathsAndExpandsLess)
         std::mt19937 rng(seed * 7);
         for (int k = 0; k < 8; ++k)
         {
-            CarLatticeQuery q;
-            q.start = test::randomFree(fc, rng);
-            q.goal = test::randomFree(fc, rng);
-            q.shoot = false;
-            const double radius = 1.5 * lattice.cell();
-            q.inGoal = [&](const Pose2 &p) { return std::hypot(p.x - q.goal.x, p.y - q.goal.y) <= radius; };
-            q.goalPositionTolerance = radius;
-            q.turnBoundAfter = 0;
+            const CarLatticeQuery q = regionQuery(fc, lattice.cell(), rng);
             CornerLikeCost cost;
             const CarLatticeResult a = search.run(q, cost, [] { return false; });
             const bool turnUsed = a.turnBoundStates > 0;
@@ -322,14 +330,7 @@ TEST(TurnHeuristic, AGrownBodysSearchReadsTheFirstSearchsBoundsOfTheSameQueryOnl
         std::mt19937 rng(seed * 13);
         for (int k = 0; k < 8; ++k)
         {
-            CarLatticeQuery q;
-            q.start = test::randomFree(grownFc, rng);
-            q.goal = test::randomFree(grownFc, rng);
-            q.shoot = false;
-            const double radius = 1.5 * scene.lattice->cell();
-            q.inGoal = [&](const Pose2 &p) { return std::hypot(p.x - q.goal.x, p.y - q.goal.y) <= radius; };
-            q.goalPositionTolerance = radius;
-            q.turnBoundAfter = 0;
+            const CarLatticeQuery q = regionQuery(grownFc, scene.lattice->cell(), rng);
             if (!scene.search.run(q, cost, never).exact) continue;
             CarLatticeQuery b = q;
             b.boundsFrom = &scene.search;
