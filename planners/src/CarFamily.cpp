@@ -25,6 +25,15 @@ constexpr std::uint64_t kProofAfter = 2000;
 /// is found (the two breadth-first searches run in turns), a room of 18 x 18 m at 0.05 m; on
 /// the 24 M-cell map it costs a few ms where the ends are joined
 constexpr std::size_t kQuickProofCells = std::size_t(1) << 18;
+/// The hybrid fallback is probed when the first search has done this much work, and 4x as
+/// much each time after; the probes together do at most an eighth of the first search's work (an
+/// expansion, or kBoundStatesPerWork states of a search's 2D and turn bounds: a profile of paper
+/// C's robot on the Tsudanuma map gave 13 us an expansion, 0.3 us a bound state). Where the
+/// lattice's fixed headings cannot thread a gap the hybrid's free ones can (a lattice turned to
+/// a start heading a few degrees off a corridor's walls), the first search would otherwise
+/// search out every place it can reach (seconds on a large map) before the fallback ran.
+constexpr std::uint64_t kProbeFirst = 50000;
+constexpr std::uint64_t kBoundStatesPerWork = 40;
 }  // namespace
 
 void CarFamily::setup(const CarLatticeConfig &cfg, std::shared_ptr<CarCollision> collision, const CarLatticeConfig *fallback,
@@ -88,6 +97,7 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
                            const LatticeCostModel &cost,
                            const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
 {
+    terms.boundsEpoch = ++queries_;  // (its searches run again keep their 2D bounds)
     const CarLatticeQuery q = queryFor(toPose(start), std::move(terms), goal);
     FamilyRun run;
     const auto t0 = std::chrono::steady_clock::now();
@@ -101,19 +111,32 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     std::string proven;
     bool startShutIn = false, asked = !q.fallbacks;
     std::atomic<std::uint64_t> seen{0};
+    CarLatticeResult probe;
+    bool probed = false;
+    std::uint64_t nextProbe = q.fallbacks && fallback_ && fallback_.get() != main ? kProbeFirst : ~std::uint64_t(0),
+                  probeExpanded = 0;
     const std::function<bool()> stop = [&] {
         const std::uint64_t n = seen.load(std::memory_order_relaxed);
-        if (progress) progress->store(n, std::memory_order_relaxed);
+        if (progress) progress->store(n + probeExpanded, std::memory_order_relaxed);
         if (!asked && n >= kProofAfter)
         {
             asked = true;
             proven = CarLatticeSearch::provenUnreachable(q, startShutIn, kQuickProofCells);
         }
-        return !proven.empty() || cancelled();
+        const std::uint64_t work = n + main->boundStates() / kBoundStatesPerWork;
+        if (proven.empty() && !probed && work >= nextProbe && !cancelled())
+        {
+            nextProbe = FallbackSchedule::nextBudget(nextProbe);
+            probed = probeHybrid(q, cost, work / 8, cancelled, *main, probe, probeExpanded);
+        }
+        return !proven.empty() || probed || cancelled();
     };
     CarLatticeResult r = main->run(q, cost, stop, &seen);
     if (!proven.empty() && r.outcome == SearchOutcome::Cancelled) r.outcome = SearchOutcome::Exhausted;
-    last_ = main;
+    const std::uint64_t firstExpanded = r.expanded;
+    if (probed) r = std::move(probe);
+    r.expanded = firstExpanded + probeExpanded;
+    last_ = probed ? fallback_.get() : main;
     // Where the search from the start ends without the goal (not stopped), the time left goes
     // to the fallback searches (FallbackSchedule: the order and the budgets); an answer is kept
     // if it reaches the goal, or if it ends nearer the goal than the one kept.
@@ -190,6 +213,27 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     if (!proven.empty()) run.end.approximateWhy = "the goal is unreachable: " + proven;
     if (!r.path.empty()) run.end.path = std::make_shared<ompl::geometric::PathGeometric>(toPath(si, r.path));
     return run;
+}
+
+bool CarFamily::probeHybrid(const CarLatticeQuery &q, const LatticeCostModel &cost, std::uint64_t budget,
+                            const std::function<bool()> &cancelled, CarLatticeSearch &main, CarLatticeResult &out,
+                            std::uint64_t &expanded)
+{
+    // the probes' work so far: their expansions, and the bound states of the hybrid search's
+    // 2D bounds, which each probe of the query resumes (CarLatticeQuery::boundsEpoch)
+    std::atomic<std::uint64_t> count{0};
+    const std::function<bool()> stop = [&] {
+        return cancelled() ||
+               expanded + count.load(std::memory_order_relaxed) + fallback_->boundStates() / kBoundStatesPerWork >= budget;
+    };
+    CarLatticeQuery b = q;
+    b.reverseWithin = -1.0;  // (as the fallback stages: they reverse wherever they can)
+    CarLatticeResult h = fallback_->run(b, cost, stop, &count);
+    main.reclaimCollision();
+    expanded += h.expanded;
+    if (!h.exact) return false;
+    out = std::move(h);
+    return true;
 }
 
 CarLatticeSearch *CarFamily::stageSearch(FallbackSearch which, CarLatticeSearch *main)

@@ -262,7 +262,8 @@ std::vector<Pose2> CarLatticeSearch::buildPath(std::uint32_t end) const
 CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCostModel &cost,
                                        const std::function<bool()> &cancelled, std::atomic<std::uint64_t> *progress)
 {
-    setFrame(q);
+    // run again in one family query (a probe, a fallback round): its 2D bounds resume
+    const bool again = setFrame(q);
     CarLatticeResult out;
     const double c = lattice_->cell();
     const int H = lattice_->neighbourCount();  // the 2D graph's steps (the lattice's headings)
@@ -283,12 +284,11 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
             return std::uint16_t(col_->axesStanding(p[0], p[1], H / 2));
         });
     }
+    const bool kept = again && !borrowed && h2d_ == ownH2d_.get() && !cost.weighted();
     if (!borrowed) h2d_ = ownH2d_.get();
     h2d_->setCancel(cancelled);
     cancelled_ = &cancelled;
-    std::vector<double> yaws;
-    for (int h = 0; h < H; ++h) yaws.push_back(phi_ + lattice_->stepYaw(h));
-    col_->setHeadings(yaws);
+    reclaimCollision();
     if (cost.weighted())
         h2d_->setWeight([this, &cost](int i, int j) { return cost.nodeWeight(nodePose(i, j, 0)); });
     else
@@ -305,7 +305,7 @@ CarLatticeResult CarLatticeSearch::run(const CarLatticeQuery &q, const LatticeCo
         }
     if (!borrowed)
     {
-        h2d_->reset(i0_, j0_, ni_, nj_, seeds, 0, 0);
+        if (!kept) h2d_->reset(i0_, j0_, ni_, nj_, seeds, 0, 0);
         use2d_ = q.aim;
         useTurn_ = false;
     }

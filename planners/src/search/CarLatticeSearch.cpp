@@ -179,14 +179,25 @@ const CurveTable *CarLatticeSearch::curveTable()
     return curveTable_.get();
 }
 
+void CarLatticeSearch::reclaimCollision()
+{
+    std::vector<double> yaws;
+    for (int h = 0; h < lattice_->neighbourCount(); ++h) yaws.push_back(phi_ + lattice_->stepYaw(h));
+    col_->setHeadings(yaws);
+}
+
 Pose2 CarLatticeSearch::latticePose(const Pose2 &w) const
 {
     const double dx = w.x - ox_, dy = w.y - oy_;
     return {cphi_ * dx + sphi_ * dy, -sphi_ * dx + cphi_ * dy, wrapYaw(w.yaw - phi_)};
 }
 
-void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
+bool CarLatticeSearch::setFrame(const CarLatticeQuery &q)
 {
+    const bool again = q.boundsEpoch != 0 && q.boundsEpoch == epoch_ && q.start.x == query_.start.x &&
+                       q.start.y == query_.start.y && q.start.yaw == query_.start.yaw &&
+                       q.freeStartHeading == query_.freeStartHeading && q.goal.x == query_.goal.x && q.goal.y == query_.goal.y;
+    epoch_ = q.boundsEpoch;
     query_ = q;
     ox_ = q.start.x;
     oy_ = q.start.y;
@@ -209,6 +220,7 @@ void CarLatticeSearch::setFrame(const CarLatticeQuery &q)
     j0_ = int(std::floor(lo[1] / c)) - 1;
     ni_ = int(std::ceil(hi[0] / c)) + 2 - i0_;
     nj_ = int(std::ceil(hi[1] / c)) + 2 - j0_;
+    return again;
 }
 
 bool CarLatticeSearch::tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions)

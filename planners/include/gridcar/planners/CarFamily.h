@@ -60,16 +60,23 @@ public:
     /// The explored graph of the last search.
     void plannerData(ompl::base::PlannerData &data, PlannerDataStates &states) const;
 
-
 private:
     /// The search a stage of the fallback schedule runs (the half-cell one built on first use).
     CarLatticeSearch *stageSearch(FallbackSearch which, CarLatticeSearch *main);
+    /// The hybrid fallback run from within the first search's termination condition until the
+    /// probes' work (@p expanded, its expansions so far, and its bound states) reaches @p budget:
+    /// true with its path in @p out when it reached the goal. @p main's headings are set on
+    /// the collision model again after it.
+    bool probeHybrid(const CarLatticeQuery &q, const LatticeCostModel &cost, std::uint64_t budget,
+                     const std::function<bool()> &cancelled, CarLatticeSearch &main, CarLatticeResult &out,
+                     std::uint64_t &expanded);
     std::shared_ptr<CarCollision> collision_;
     /// the lattice; the hybrid fallback; the hybrid at half its cell, where both ran out; the
     /// lattice for a goal heading to meet (null: search_)
     std::unique_ptr<CarLatticeSearch> search_, fallback_, fine_, forPoses_;
     CarLatticeConfig fineConfig_;  ///< fine_'s primitive set (fine_ is built on first use)
     CarLatticeSearch *last_{nullptr};
+    std::uint64_t queries_{0};  ///< queries solved (CarLatticeQuery::boundsEpoch)
 };
 
 }  // namespace gridcar

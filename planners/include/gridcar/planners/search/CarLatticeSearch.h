@@ -102,10 +102,8 @@ struct CarLatticeQuery : CarGoalTerms
     /// True if a state at world pose @p p may set off backwards (reverseWithin).
     bool mayReverseAt(const Pose2 &p) const
     {
-        if (reverseWithin < 0) return true;
-        const double r2 = reverseWithin * reverseWithin;
-        const auto d2 = [&p](const Pose2 &e) { return (p.x - e.x) * (p.x - e.x) + (p.y - e.y) * (p.y - e.y); };
-        return d2(start) <= r2 || d2(goal) <= r2;
+        const auto near = [&](const Pose2 &e) { return (p.x - e.x) * (p.x - e.x) + (p.y - e.y) * (p.y - e.y) <= reverseWithin * reverseWithin; };
+        return reverseWithin < 0 || near(start) || near(goal);
     }
     /// Cost (>= 0, the cost model's unit; settings.cuspPenalty resolved and converted) of a gear change: between a state reached forwards
     /// and a motion backwards, or the other way, and at every cusp of the analytic expansion.
@@ -139,6 +137,9 @@ struct CarLatticeQuery : CarGoalTerms
     /// is one of that body's), and this run reads them, resuming their searches, instead of
     /// searching the 2D graph again; weaker bounds than this body's own (null: its own).
     CarLatticeSearch *boundsFrom{nullptr};
+    /// Shared by the runs of one CarFamily query (0: none): a search run again within it from
+    /// the same start to the same goal (a probe, a fallback round) resumes its 2D bounds.
+    std::uint64_t boundsEpoch{0};
     /// The map the search runs on, for the costs read off it (null: none, as on an OMPL
     /// application's own validity checker): its cost layer and its distance field.
     const FootprintChecker *map{nullptr};
@@ -257,6 +258,8 @@ public:
     const CarCollision &collision() const { return *col_; }
     /// Largest open-space 2D-graph distance over primitive length (>= 1).
     double heuristicRatio() const { return ratio_; }
+    /// Sets its headings on the shared collision model again (a probe's search ran meanwhile).
+    void reclaimCollision();
     /// The states the last run's bounds closed: 2D nodes and (node, axis) states of the turn
     /// bound (what reading them through CarLatticeQuery::boundsFrom saves another search).
     std::size_t boundStates() const
@@ -321,7 +324,7 @@ private:
     std::uint32_t intern(int i, int j, int h);
     /// The state of node (i, j, h) if this run has seen it, else StateInterner::kNone.
     std::uint32_t known(int i, int j, int h) const { return states_.find(pack(i, j, h)); }
-    void setFrame(const CarLatticeQuery &q);
+    bool setFrame(const CarLatticeQuery &q);  ///< true: the last run was the same family query's
     bool fitsAtNode(int i, int j) const;
     /// The analytic expansion from state @p s (AnalyticExpansion: when, which curves, free).
     bool tryShot(std::uint32_t s, const LatticeCostModel &cost, std::uint64_t expansions);
@@ -360,6 +363,7 @@ private:
     int i0_{0}, j0_{0}, ni_{1}, nj_{1};
     CarLatticeQuery query_;
     std::unique_ptr<ObstacleHeuristic> ownH2d_;
+    std::uint64_t epoch_{0};  ///< the last run's CarLatticeQuery::boundsEpoch
     ObstacleHeuristic *h2d_{nullptr};  ///< the last run's 2D distances: ownH2d_ or borrowed (borrowBounds())
     bool use2d_{true};
     /// the 2D heuristic with turning counted (cost models that charge turning), kept across runs

@@ -71,8 +71,13 @@ public:
     /// per node, for all its axes at once (at most 16: one lookup may answer them all).
     void setAxisTest(std::vector<int> stepAxis, std::function<std::uint16_t(int, int)> fitsAxes);
     /// Polled while distance() resumes the search: every closed node at first, every 1024 once
-    /// polls come fast (PollSchedule).
-    void setCancel(std::function<bool()> cancelled) { cancelled_ = std::move(cancelled); }
+    /// polls come fast (PollSchedule). A search the last one stopped resumes (it stopped
+    /// before it popped a node).
+    void setCancel(std::function<bool()> cancelled)
+    {
+        cancelled_ = std::move(cancelled);
+        stopped_ = false;
+    }
     bool inBox(int i, int j) const { return i >= i0_ && j >= j0_ && i < i0_ + ni_ && j < j0_ + nj_; }
     /// Nodes closed so far (for benchmarks).
     std::size_t closedCount() const { return closedCount_; }
