@@ -230,10 +230,9 @@ TEST(Simulation, AFastCarBlockedAtAPinchPointBrakesClearOfIt)
     GRIDCAR_REQUIRE_SHARED_MAPS();
     auto grid = std::make_shared<const OccupancyGrid>(loadRosMap(test::sharedMaps() + "/ros/tsudanuma_campus/tsudanuma_all.yaml"));
     GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
-    // (without the safety margin and the hybrid fallback: the path of the drive suite before them,
-    // which met the pinch point)
+    // (without the safety margin: the path of the drive suite before it, which met the pinch point)
     auto p = configurePlanner(s.ss->getSpaceInformation(),
-                              {"improved-astar", {{"mode", "integral"}, {"shortcut", "on"}, {"turns", "arc"}, {"safety_margin", "0"}, {"primitives", "lattice"}}, true, false});
+                              {"improved-astar", {{"mode", "integral"}, {"shortcut", "on"}, {"turns", "arc"}, {"safety_margin", "0"}}, true, false});
     const QueryResult r = runQuery(s, p, {48.525, -102.975, -2.677945}, {-82.975, -80.525, 0.0}, 10.0, /*freeGoalHeading=*/true);
     ASSERT_EQ(r.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
     ASSERT_TRUE(r.drivability.drivable) << r.drivability.reason;
@@ -312,41 +311,4 @@ TEST(Simulation, AStandingBoxBesideTheRoadIsDrivenPast)
     ASSERT_EQ(r.outcome, DriveResult::Outcome::Reached) << r.reason;
     EXPECT_GT(r.minClearance, 0.3);
     EXPECT_LT(r.crossTrackMax, 0.5);
-}
-
-// A standing obstacle of the scenario that the path passes closely (a plan made with it seen,
-// as the navigator's) pushes as the map does: only where the vehicle strays nearer it than the
-// path. Paper C's robot (0.4 m wide) through a 0.6 m slot between a wall of the map and an
-// unmapped box, 0.1 m either side: at the full 1.5 m range the box pushed it into the wall
-// (MIT Stata, navigation pair 6: stuck or touching the wall). A box the path runs into still
-// pushes at full range (the follower swerves round it).
-TEST(Simulation, AStandingObstacleThePathClearsPushesOnlyAsTheMapDoes)
-{
-    auto g = std::make_shared<OccupancyGrid>(600, 120, 0.05);  // 30 m x 6 m
-    const double y = 3.0;
-    for (int r = 0; r < g->height(); ++r)
-        for (int c = 0; c < g->width(); ++c)
-            if (g->cellCenterX(c) > 12 && g->cellCenterX(c) < 16 && g->cellCenterY(r) < y - 0.3) g->set(c, r, CellState::Occupied);
-    GridSetup s = makeGridSetup(g, VehicleParams::preset("paper-c-robot"));
-    MovingObstacle box;
-    box.shape = MovingObstacle::Shape::Box;
-    box.sizeX = 4.0, box.sizeY = 1.0;
-    box.waypoints = {{14.0, y + 0.3 + 0.5}};
-    box.speed = 0.0;
-    Scenario sc;
-    sc.obstacles.push_back(box);
-    const DriveResult r = drivePath(straight(3.0, 27.0, y, 0.05), *s.checker, sc);
-    ASSERT_EQ(r.outcome, DriveResult::Outcome::Reached) << r.reason;
-    double worst = 0.0;
-    for (const auto &t : r.trajectory) worst = std::max(worst, std::abs(t.y - y));
-    EXPECT_LT(worst, 0.05) << "driven off the path by the box";
-    // the same box across the path: the follower still swerves round it (full range)
-    box.waypoints = {{14.0, y + 0.3}};
-    sc.obstacles = {box};
-    auto open = makeGridSetup(std::make_shared<OccupancyGrid>(600, 120, 0.05), VehicleParams::preset("paper-c-robot"));
-    const DriveResult across = drivePath(straight(3.0, 27.0, y, 0.05), *open.checker, sc);
-    EXPECT_NE(across.outcome, DriveResult::Outcome::Collided) << across.reason;
-    double below = 0.0;
-    for (const auto &t : across.trajectory) below = std::max(below, y - t.y);
-    EXPECT_GT(below, 0.4) << "no swerve round a box the path runs into";
 }

@@ -211,7 +211,7 @@ public:
             {
                 double mx, my;
                 m.positionAt(t, mx, my);
-                push(m.distanceFrom(px, py, t) - halfWidth_, px - mx, py - my, influence(m, t, o, L));
+                push(m.distanceFrom(px, py, t) - halfWidth_, px - mx, py - my, prm_.rho0);
             }
             for (const auto &vo : virtualObstacles_)
                 push(std::hypot(px - vo.first, py - vo.second) - 0.5 - halfWidth_, px - vo.first, py - vo.second, prm_.rho0);
@@ -292,24 +292,6 @@ public:
     bool bodyFree(const VehicleState &st, double t, DriveResult &res, double &clearance) const;
 
 private:
-    /// The influence distance of scenario obstacle @p m on body point @p o (m ahead of the
-    /// reference point): where @p m stands still and the path clears it from here to a metre
-    /// past the look-ahead @p L (a plan made with it seen, as the navigator's), what the path
-    /// leaves it at the body point, as for the map; else (it moves or will, or the path runs into it)
-    /// the full rho0. A standing box pushing at full range beside a path threaded past it
-    /// drove paper C's robot off the path into the obstacles on the other side.
-    double influence(const MovingObstacle &m, double t, double o, double L) const
-    {
-        if (m.speed > 0 && m.waypoints.size() > 1) return prm_.rho0;
-        const auto &p = path_.pts;
-        const auto gap = [&](std::size_t i, double off) {
-            return m.distanceFrom(p[i].x + off * std::cos(p[i].yaw), p[i].y + off * std::sin(p[i].yaw), t) - halfWidth_;
-        };
-        for (std::size_t i = seg_; i < p.size() && path_.cum[i] <= sProj_ + L + 1.0; ++i)
-            if (gap(i, veh_.centreOffset()) <= 0 || gap(i, frontOffset_ - halfWidth_) <= 0) return prm_.rho0;
-        return std::clamp(gap(std::min(seg_ + 1, p.size() - 1), o), 0.05, prm_.rho0);
-    }
-
     /// Free distance ahead of the front bumper in a lane of the body's width: of the map and
     /// the virtual obstacles (returned), and of the moving obstacles (@p freeMoving).
     double freeAhead(const VehicleState &q, double time, double &freeMoving) const
