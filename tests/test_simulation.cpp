@@ -230,9 +230,11 @@ TEST(Simulation, AFastCarBlockedAtAPinchPointBrakesClearOfIt)
     GRIDCAR_REQUIRE_SHARED_MAPS();
     auto grid = std::make_shared<const OccupancyGrid>(loadRosMap(test::sharedMaps() + "/ros/tsudanuma_campus/tsudanuma_all.yaml"));
     GridSetup s = makeGridSetup(grid, VehicleParams::preset("paper-c-car"));
-    // (without the safety margin: the path of the drive suite before it, which met the pinch point)
-    auto p = configurePlanner(s.ss->getSpaceInformation(),
-                              {"improved-astar", {{"mode", "integral"}, {"shortcut", "on"}, {"turns", "arc"}, {"safety_margin", "0"}}, true, false});
+    // (without the safety margin, on the route lattice's cell of the time: the path of the drive
+    // suite then, which met the pinch point)
+    auto p = configurePlanner(
+        s.ss->getSpaceInformation(),
+        {"improved-astar", {{"mode", "integral"}, {"shortcut", "on"}, {"turns", "arc"}, {"safety_margin", "0"}, {"lattice_cell", "0.45"}}, true, false});
     const QueryResult r = runQuery(s, p, {48.525, -102.975, -2.677945}, {-82.975, -80.525, 0.0}, 10.0, /*freeGoalHeading=*/true);
     ASSERT_EQ(r.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
     ASSERT_TRUE(r.drivability.drivable) << r.drivability.reason;

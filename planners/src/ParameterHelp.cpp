@@ -19,7 +19,7 @@ const std::map<std::string, std::string> &singles()
         {"free_start_heading", "start at any heading where the vehicle fits (the start state's yaw ignored)"},
         {"turning_radius", "minimum turning radius, m (0: the vehicle's R_min, or OMPL's Dubins / Reeds-Shepp radius)"},
         {"max_memory_mb", "the search stops (approximate answer, with the reason) when the process's resident memory passes this, MB"},
-        {"lattice_cell", "cell of the search's lattice, m (0: from the map's resolution and the vehicle)"},
+        {"lattice_cell", "cell of the search's lattice, m (0: from the map's resolution and the vehicle; on the car lattice a route's may be twice a goal pose's)"},
         {"match_goal_heading", "arrive at a GoalState's yaw (else at any heading where the vehicle fits)"},
         {"cost", "corner A*'s search cost: corners (length + corner weights) or time (driving time)"},
         {"turn_heuristic", "the 2D heuristic also counts the corner weights of the turning its route needs (with cost=corners)"},

@@ -65,8 +65,17 @@ public:
     /// The car lattice in use after setup() (null before).
     const CarLatticeSearch *carSearch() const { return car_.search(); }
     /// The primitive set setup() gives the car lattice for this map and vehicle (with
-    /// `primitives=auto`, the lattice's; carLatticeConfig(true) is its hybrid fallback).
+    /// `primitives=auto`, the lattice's; carLatticeConfig(true) is its hybrid fallback): a
+    /// route's, on routeCell().
     CarLatticeConfig carLatticeConfig() const;
+    /// The lattice cell of a query to a goal position, a route (m): with `lattice_cell` unset
+    /// on gridcar's checker, twice poseCell() where that is at most 0.4 R_min, else poseCell().
+    double routeCell() const;
+    /// The lattice cell of a query to a goal pose (m): `lattice_cell`, else a quarter of the
+    /// vehicle's width or R_min (the smaller) on the map's resolution; R_min / 4 on an
+    /// application's own validity checker. A goal pose to meet is often a manoeuvre among
+    /// obstacles, which a coarse lattice cannot make (docs/planners.md, the car lattice's "Nodes").
+    double poseCell() const;
     /// With @p reach > 0, the primitives sampled for a body of that reach (the grown body of
     /// the safety margin) instead of the checker's.
     CarLatticeConfig carLatticeConfig(bool hybrid, double reach = 0.0) const;
