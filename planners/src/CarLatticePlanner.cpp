@@ -176,7 +176,7 @@ CarLatticeConfig CarLatticePlanner::carLatticeConfig(bool hybrid, double reach) 
     if (checker_)
     {
         const double res = checker_->grid().resolution();
-        cfg.cell = latticeCell() > 0 ? latticeCell() : routeCell();
+        cfg.cell = routeCell();
         cfg.spacing = std::min(res, 0.1);
         cfg.reach = reach > 0 ? reach : checker_->reach();
     }
@@ -184,7 +184,7 @@ CarLatticeConfig CarLatticePlanner::carLatticeConfig(bool hybrid, double reach) 
     {
         // any other validity checker: poses no farther apart than 0.1 m or OMPL's longest
         // valid segment, whichever is shorter (the checker sees poses only)
-        cfg.cell = latticeCell() > 0 ? latticeCell() : rmin / 4;
+        cfg.cell = routeCell();
         cfg.spacing = std::min({0.1, cfg.cell / 2, si_->getStateSpace()->getLongestValidSegmentLength()});
         cfg.reach = 0.0;
     }
