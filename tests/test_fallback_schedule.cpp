@@ -55,6 +55,15 @@ TEST(FallbackSchedule, StagesInTheirDocumentedOrder)
     nearEnds.latticeReverses = false;  // (a forward lattice has nothing to reverse everywhere)
     EXPECT_FALSE(FallbackSchedule(nearEnds).stages().front() == (FallbackStage{FallbackSearch::Lattice, false}));
 
+    FallbackOptions shut = everything();  // the first search could not leave its start: no lattice stage
+    shut.reverseNearEnds = true;
+    shut.startShut = true;
+    const std::vector<FallbackStage> hybridOnly{{FallbackSearch::Hybrid, false}, {FallbackSearch::Hybrid, true},
+                                                {FallbackSearch::FineHybrid, false}, {FallbackSearch::FineHybrid, true}};
+    EXPECT_EQ(FallbackSchedule(shut).stages(), hybridOnly);
+    shut.hybrid = false;  // and without the hybrid set nothing is left to run
+    EXPECT_TRUE(FallbackSchedule(shut).stages().empty());
+
     FallbackOptions none = everything();  // no hybrid set, forward lattice: nothing to fall back on
     none.hybrid = false;
     none.latticeReverses = false;

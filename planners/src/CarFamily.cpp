@@ -144,6 +144,8 @@ FamilyRun CarFamily::solve(const ompl::base::SpaceInformationPtr &si, const ompl
     fo.fixedEnds = goal.kind == GoalTarget::Kind::State && q.goalYawTolerance == 0 && !q.freeStartHeading;
     fo.latticeReverses = main->lattice().config().reverse;
     fo.reverseNearEnds = q.reverseWithin >= 0;
+    // a start the first search could not leave: its one state expanded, no motion out of it free
+    fo.startShut = !probed && !q.freeStartHeading && firstExpanded <= 1 && r.outcome == SearchOutcome::Exhausted;
     fo.hybrid = fallback_ != nullptr;
     fo.hybridReverses = fallback_ && fallback_->lattice().config().reverse;
     fo.fine = fallback_ && fineConfig_.cell >= 0.025;

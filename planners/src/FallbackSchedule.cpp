@@ -9,8 +9,9 @@ namespace gridcar
 {
 FallbackSchedule::FallbackSchedule(const FallbackOptions &o)
 {
-    if (o.reverseNearEnds && o.latticeReverses) stages_.push_back({FallbackSearch::Lattice, false});
-    if (o.fixedEnds && o.latticeReverses) stages_.push_back({FallbackSearch::Lattice, true});
+    const bool lattice = o.latticeReverses && !o.startShut;
+    if (o.reverseNearEnds && lattice) stages_.push_back({FallbackSearch::Lattice, false});
+    if (o.fixedEnds && lattice) stages_.push_back({FallbackSearch::Lattice, true});
     if (!o.hybrid) return;
     stages_.push_back({FallbackSearch::Hybrid, false});
     if (o.fixedEnds && o.hybridReverses) stages_.push_back({FallbackSearch::Hybrid, true});

@@ -36,6 +36,11 @@ struct FallbackOptions
     /// the first search reversed only near the start and the goal (reverse=auto,
     /// CarLatticeQuery::reverseWithin): every stage reverses everywhere
     bool reverseNearEnds{false};
+    /// The first search could not leave its start pose (no motion of its primitive set out of
+    /// it is free, forwards or backwards): the same set reversing everywhere cannot either, and
+    /// from the goal back it could only come in by those motions reversed. Its stages are left
+    /// out; the hybrid set's finer manoeuvres may leave where the lattice's cannot.
+    bool startShut{false};
     bool hybrid{false};           ///< the family has the hybrid set (then also at half its cell)
     bool hybridReverses{false};   ///< the hybrid set drives backwards
     bool fine{false};             ///< the hybrid set can be halved (its cell >= 5 cm)
@@ -49,6 +54,7 @@ struct FallbackOptions
  *    reversing everywhere (a dead end or a tight corner on the way);
  * 1. the first search again from the goal back to the start (a goal pose met exactly,
  *    reversing);
+ *    (0 and 1 left out where the first search could not leave its start: startShut)
  * 2. the hybrid set (Hybrid A*'s finer manoeuvres: the lattice's nodes could not make it),
  *    then from the goal back;
  * 3. the hybrid set at half its cell (down to 2.5 cm), then from the goal back.
