@@ -1,7 +1,8 @@
 // The defaults suite: what a user meets with no parameters set. Seeded queries on the real maps
 // in ../shared with their vehicles (paper C's robot indoors and on the Tsudanuma campus, both
 // cars on Tsudanuma and the embedded campus), half of them to a goal pose (arrived at with the
-// yaw the car fits at there), half to a position; corner-astar and improved-astar with their
+// yaw the car fits at there), half to a position, from a start without a heading (the planner
+// chooses it; --start-yaw: at the yaw the car fits at); corner-astar and improved-astar with their
 // defaults (or with --param). Every exact path is checked independently (checkDrivable: exact
 // FCL at 2 cm, K_max; reversing pieces with the body turned round) and its length compared with
 // the shortest drivable path any of the reference configurations found for the query. Then
@@ -62,6 +63,7 @@ struct Options
     std::vector<std::string> only, params, planners;
     bool noReferences{false};
     int unreachable{2};
+    bool startYaw{false};  ///< start at the fitting yaw (an OMPL application's start state), not a free heading
 };
 
 struct Run
@@ -81,11 +83,11 @@ double quantile(std::vector<double> v, double q)
 /// One configuration over an area's queries, on one kept planner (as an application keeps it).
 std::vector<Run> runConfiguration(GridSetup &setup, const NamedConfiguration &c, const PlannerParams &extra,
                                   const std::vector<std::pair<Pose2, Pose2>> &queries, double limit, double &setupSeconds,
-                                  const std::string &cli)
+                                  const std::string &cli, bool freeStart)
 {
     PlannerParams params = c.second;
     params.insert(params.end(), extra.begin(), extra.end());
-    auto planner = configurePlanner(setup.ss->getSpaceInformation(), {c.first, params, true, false});
+    auto planner = configurePlanner(setup.ss->getSpaceInformation(), {c.first, params, freeStart, false});
     const auto t0 = std::chrono::steady_clock::now();
     planner->setup();
     setupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -102,9 +104,11 @@ std::vector<Run> runConfiguration(GridSetup &setup, const NamedConfiguration &c,
             if (pose) goal += "," + std::to_string(queries[k].second.yaw * 180 / M_PI);
             std::string set;
             for (const auto &kv : params) set += " --param " + kv.first + "=" + kv.second;
-            std::fprintf(stderr, "[defaults]   %.2f s: %s --planner %s%s --start %f,%f,%f --goal %s\n", r.seconds, cli.c_str(),
-                         c.first.c_str(), set.c_str(), queries[k].first.x, queries[k].first.y, queries[k].first.yaw * 180 / M_PI,
-                         goal.c_str());
+            // with a free start heading the start without a yaw, as gridcar plan takes it then
+            std::string start = std::to_string(queries[k].first.x) + "," + std::to_string(queries[k].first.y);
+            if (!freeStart) start += "," + std::to_string(queries[k].first.yaw * 180 / M_PI);
+            std::fprintf(stderr, "[defaults]   %.2f s: %s --planner %s%s --start %s --goal %s\n", r.seconds, cli.c_str(),
+                         c.first.c_str(), set.c_str(), start.c_str(), goal.c_str());
         }
         run.exact = r.status == ompl::base::PlannerStatus::EXACT_SOLUTION;
         run.drivable = run.exact && r.drivability.drivable;
@@ -180,7 +184,7 @@ void runArea(const Options &o, const Area &area)
         if (!o.planners.empty() && std::find(o.planners.begin(), o.planners.end(), c.first) == o.planners.end())
             continue;
         double s = 0;
-        tested.push_back(runConfiguration(setup, c, extra, queries, o.limit, s, cli));
+        tested.push_back(runConfiguration(setup, c, extra, queries, o.limit, s, cli, !o.startYaw));
         testedConfigs.push_back(c);
         setups.push_back(s);
         std::fprintf(stderr, "[defaults]   %s done (planner set-up %.2f s)\n", configurationLabel(c).c_str(), s);
@@ -189,7 +193,7 @@ void runArea(const Options &o, const Area &area)
         for (const auto &c : kReferences)
         {
             double s = 0;
-            refs.push_back(runConfiguration(setup, c, {}, queries, o.limit, s, cli));
+            refs.push_back(runConfiguration(setup, c, {}, queries, o.limit, s, cli, !o.startYaw));
             std::fprintf(stderr, "[defaults]   reference %s done\n", configurationLabel(c).c_str());
         }
     // each query's shortest drivable path over every configuration run
@@ -251,6 +255,9 @@ int main(int argc, char **argv)
                    "goal poses per area proven cut off from the start, answered by the defaults (0: none)")
         ->capture_default_str()
         ->check(CLI::Range(0, 100));
+    app.add_flag("--start-yaw", o.startYaw,
+                 "start at the yaw the vehicle fits at there, as an OMPL application's start state (default: a free start "
+                 "heading, as gridcar plan --start X,Y)");
     app.add_flag("--no-references", o.noReferences, "skip the reference configurations (the ratio is then to the defaults' shortest)");
     CLI11_PARSE(app, argc, argv);
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
