@@ -220,3 +220,23 @@ TEST(Navigator, NoPlanFromWhereTheCarStandsBacksItUpAlongItsTrack)
         backed = backed || (r.trajectory[i].v < 0 && r.trajectory[i].x < r.trajectory[i - 1].x && r.trajectory[i].x > 10.0);
     EXPECT_TRUE(backed);
 }
+
+// Footprint clearing (Nav2's obstacle layer): a pallet 4 cm beside the robot as it stands shares
+// a 0.1 m cell with its body; a scan that marked that cell would leave the robot's own pose in
+// collision in the working map, with no plan from it. The cells the body overlaps are kept clear,
+// so the robot plans, drives off and arrives.
+TEST(Navigator, AnObstacleSharingACellWithTheBodyLeavesItsPoseFree)
+{
+    const VehicleParams robot = VehicleParams::preset("paper-c-robot");
+    const Pose2 start{3.0, 6.05, 0.0};
+    const double top = start.y + robot.width / 2;  // the body's left side, y 6.25 (cell 6.2-6.3)
+    Scenario sc;
+    sc.obstacles.push_back(standingBox(3.0, top + 0.04 + 0.5, 1.0, 1.0));
+    Navigator nav(hall(), robot);
+    const NavigationResult r = nav.run(start, {13.0, 6.05, 0.0}, false, sc);
+    ASSERT_EQ(r.outcome, NavigationResult::Outcome::Reached) << r.reason;
+    EXPECT_GT(r.sensedCells, 0u);  // the pallet's face beside where the robot stood is mapped
+    const Cell beside = nav.workingMap().worldToCell(2.55, top + 0.05);
+    EXPECT_EQ(nav.workingMap().at(beside.col, beside.row), CellState::Occupied);
+    EXPECT_GT(worstClearance(r, nav.worldChecker(), sc), 0.0);
+}

@@ -107,3 +107,28 @@ TEST(Sensing, ATrueMapWallTheGivenMapLacksIsMappedAndAMismatchedMapRefused)
     bad.range = 0.0;
     EXPECT_THROW(wm.scan(*truth, Scenario(), 0.0, 5.0, 5.0, bad), std::invalid_argument);
 }
+
+// Footprint clearing: a cell the vehicle's body overlaps is not marked (a box 2 cm beside the
+// body shares a cell with it), and one marked before is given back when the body covers it.
+TEST(Sensing, CellsTheBodyOverlapsAreKeptClear)
+{
+    const auto truth = room();
+    Scenario sc;
+    sc.obstacles.push_back(box(5.54, 5.0, 1.0, 1.0));  // x 5.04-6.04: its face in the cell 5.0-5.1
+    const std::vector<std::array<double, 2>> body{{4.0, 4.8}, {5.02, 4.8}, {5.02, 5.2}, {4.0, 5.2}};
+    WorkingMap without(std::make_shared<OccupancyGrid>(*truth));
+    without.scan(*truth, sc, 0.0, 4.5, 5.03, RangeSensorParams());
+    ASSERT_TRUE(occupiedAt(without.grid(), 5.05, 5.03));  // marked where the body is not said
+    WorkingMap with(std::make_shared<OccupancyGrid>(*truth));
+    with.scan(*truth, sc, 0.0, 4.5, 5.03, RangeSensorParams(), &body);
+    EXPECT_FALSE(occupiedAt(with.grid(), 5.05, 5.03));
+    EXPECT_FALSE(occupiedAt(with.grid(), 5.05, 4.85));
+    EXPECT_TRUE(occupiedAt(with.grid(), 5.05, 5.35));  // above the body: marked
+    EXPECT_GT(with.sensedCells(), 0u);
+    // the cell marked by the scan without the body is cleared by one with it, in the window
+    const Cell c = without.grid().worldToCell(5.05, 5.03);
+    const CellWindow w = without.scan(*truth, sc, 0.2, 4.5, 5.03, RangeSensorParams(), &body);
+    EXPECT_FALSE(occupiedAt(without.grid(), 5.05, 5.03));
+    EXPECT_TRUE(c.col >= w.col0 && c.col <= w.col1 && c.row >= w.row0 && c.row <= w.row1);
+    EXPECT_EQ(without.sensedCells(), with.sensedCells());
+}

@@ -45,10 +45,13 @@ struct Navigator::Impl
     NavigationOptions options;
     VehicleState car;  ///< the vehicle's state in the true world (its body's pose, speed, steering)
     std::size_t blockedAt{0};  ///< the first pose of the last plan found blocked in the working map
+    std::vector<std::array<double, 2>> outline;  ///< the body's, in its frame (VehicleParams::outline())
+    std::vector<std::array<double, 2>> body;     ///< the body's at the last scan, in the world
 
     Impl(const std::shared_ptr<const OccupancyGrid> &map, const VehicleParams &vehicle, const NavigationOptions &o,
          std::shared_ptr<const OccupancyGrid> truth)
-      : world(truth ? std::move(truth) : map), working(std::make_shared<OccupancyGrid>(*map)), options(o)
+      : world(truth ? std::move(truth) : map), working(std::make_shared<OccupancyGrid>(*map)), options(o),
+        outline(vehicle.outline())
     {
         if (!world->sameFrame(*map))
             throw std::invalid_argument("Navigator: the true map must have the map's size, resolution and origin");
@@ -60,10 +63,15 @@ struct Navigator::Impl
         planner = configurePlanner(setup.ss->getSpaceInformation(), o.planner);
     }
 
-    /// One scan; the working map's field and checker brought up to date. True when cells changed.
-    bool sense(const Scenario &sc, double t, double x, double y, NavigationResult &res)
+    /// One scan from the vehicle at (x, y, yaw), the cells its body overlaps kept clear
+    /// (WorkingMap::scan()); the working map's field and checker brought up to date. True when
+    /// cells changed.
+    bool sense(const Scenario &sc, double t, double x, double y, double yaw, NavigationResult &res)
     {
-        const CellWindow w = working.scan(*world, sc, t, x, y, options.sensor);
+        const double c = std::cos(yaw), s = std::sin(yaw);
+        body.clear();
+        for (const auto &p : outline) body.push_back({x + c * p[0] - s * p[1], y + s * p[0] + c * p[1]});
+        const CellWindow w = working.scan(*world, sc, t, x, y, options.sensor, body.size() >= 3 ? &body : nullptr);
         if (w.empty()) return false;
         const auto t0 = std::chrono::steady_clock::now();
         setup.checker->cellsChanged(w, field->update(working.grid(), w));
@@ -142,7 +150,7 @@ bool Navigator::Impl::retreat(const Scenario &sc, NavigationResult &res, double 
     FollowerParams fp = options.follower;
     fp.startTime = t;
     drive(back, fp, sc, res, t, at);
-    sense(sc, t, at.x, at.y, res);
+    sense(sc, t, at.x, at.y, at.yaw, res);
     return true;
 }
 
@@ -187,7 +195,7 @@ DriveResult Navigator::Impl::goOn(const std::vector<Pose2> &path, std::size_t fr
         if (now - lastScan >= options.sensor.period - 1e-9)
         {
             lastScan = now;
-            sense(sc, now, st.x, st.y, res);
+            sense(sc, now, st.x, st.y, st.yaw, res);
         }
         return now >= until - 1e-9;
     };
@@ -242,7 +250,7 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
     res.finalPose = start;
     m.car = VehicleState{start.x, start.y, start.yaw, 0.0, 0.0};
     std::size_t updatesSeen = 0, ahead = 0;
-    m.sense(scenario, t, at.x, at.y, res);
+    m.sense(scenario, t, at.x, at.y, at.yaw, res);
     auto finish = [&](NavigationResult::Outcome o, std::string why) {
         res.outcome = o;
         res.reason = std::move(why);
@@ -321,7 +329,7 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
             if (now - lastScan < m.options.sensor.period - 1e-9) return false;
             lastScan = now;
             ahead = nearestAhead(path, ahead, s.x, s.y);
-            if (!m.sense(scenario, now, s.x, s.y, res)) return false;
+            if (!m.sense(scenario, now, s.x, s.y, s.yaw, res)) return false;
             for (std::size_t i = ahead; i < path.size(); ++i)
                 if (!work.isValid(path[i])) return m.blockedAt = i, true;
             return false;
@@ -338,7 +346,7 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
             case DriveResult::Outcome::Stuck:
                 if (++res.stalls > m.options.maxStalls)
                     return finish(NavigationResult::Outcome::Stuck, d.reason + " (" + std::to_string(res.stalls) + " stalls)");
-                m.sense(scenario, t, at.x, at.y, res);
+                m.sense(scenario, t, at.x, at.y, at.yaw, res);
                 break;
             default: break;  // interrupted: the path ahead is blocked in the working map (rolling or at a standstill)
         }

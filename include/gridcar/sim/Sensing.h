@@ -7,9 +7,11 @@
 #include "gridcar/map/OccupancyGrid.h"
 #include "gridcar/sim/Simulation.h"
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <unordered_map>
+#include <vector>
 
 namespace gridcar
 {
@@ -48,8 +50,14 @@ public:
     /// map; std::invalid_argument otherwise) and @p world. Returns the cells that changed (their
     /// bounding window; empty when none), to pass to DistanceField::update() and
     /// FootprintChecker::cellsChanged().
+    ///
+    /// Footprint clearing (Nav2's obstacle layer, `footprint_clearing_enabled`): with @p body
+    /// (the vehicle's outline in world coordinates, as it stands), a cell the body overlaps is
+    /// not marked, and a marked one is given back its state in the map: nothing can stand where
+    /// the vehicle is, and a cell a scan marked for an obstacle beside the body, were it kept,
+    /// would leave the vehicle's own pose in collision in the working map (no plan from it).
     CellWindow scan(const OccupancyGrid &truth, const Scenario &world, double t, double x, double y,
-                    const RangeSensorParams &sensor);
+                    const RangeSensorParams &sensor, const std::vector<std::array<double, 2>> *body = nullptr);
 
     const OccupancyGrid &grid() const { return *grid_; }
     std::shared_ptr<OccupancyGrid> gridPtr() const { return grid_; }
@@ -59,6 +67,9 @@ public:
     bool sensedWithin(double x, double y, double radius) const;
 
 private:
+    /// Gives the marked cells that @p body overlaps back their state in the map (into @p changed).
+    void clearUnder(const std::vector<std::array<double, 2>> &body, CellWindow &changed);
+
     std::shared_ptr<OccupancyGrid> grid_;
     std::unordered_map<std::size_t, CellState> sensed_;  ///< marked cell -> its state in the given map
 };
