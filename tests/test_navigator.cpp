@@ -240,3 +240,19 @@ TEST(Navigator, AnObstacleSharingACellWithTheBodyLeavesItsPoseFree)
     EXPECT_EQ(nav.workingMap().at(beside.col, beside.row), CellState::Occupied);
     EXPECT_GT(worstClearance(r, nav.worldChecker(), sc), 0.0);
 }
+
+// A drive that runs past its time limit (the follower backing up and trying again on a short
+// piece until then) is planned again from where the car stands, as a stall; the run ends as
+// timeout only when the stalls run out.
+TEST(Navigator, ADriveThatRunsOutOfTimeIsPlannedAgainAsAStall)
+{
+    NavigationOptions o;
+    o.follower.timeLimit = 2.0;  // each drive: 2 s, far short of the 34 m route
+    Navigator nav(hall(), VehicleParams::preset("paper-c-robot"), o);
+    const NavigationResult r = nav.run({3.0, 6.0, 0.0}, {37.0, 6.0, 0.0}, false, Scenario());
+    EXPECT_EQ(r.outcome, NavigationResult::Outcome::Timeout) << r.reason;
+    EXPECT_EQ(r.stalls, o.maxStalls + 1);
+    EXPECT_GE(r.plans.size(), std::size_t(o.maxStalls + 1));
+    EXPECT_NE(r.reason.find("stalls"), std::string::npos) << r.reason;
+    EXPECT_GT(r.finalPose.x, 3.5);  // each drive got on: planned from where the last one ended
+}

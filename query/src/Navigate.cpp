@@ -342,10 +342,14 @@ NavigationResult Navigator::run(const Pose2 &start, const Pose2 &goal, bool free
                     return finish(NavigationResult::Outcome::Reached, d.reason);
                 break;  // stopped short of the tolerance: plan again from here
             case DriveResult::Outcome::Collided: return finish(NavigationResult::Outcome::Collided, d.reason);
-            case DriveResult::Outcome::Timeout: return finish(NavigationResult::Outcome::Timeout, d.reason);
+            // a drive past its time limit (backing up and trying again on a short piece until
+            // then) is stuck too: planned again from where the car stands, as a stall
+            case DriveResult::Outcome::Timeout:
             case DriveResult::Outcome::Stuck:
                 if (++res.stalls > m.options.maxStalls)
-                    return finish(NavigationResult::Outcome::Stuck, d.reason + " (" + std::to_string(res.stalls) + " stalls)");
+                    return finish(d.outcome == DriveResult::Outcome::Timeout ? NavigationResult::Outcome::Timeout
+                                                                              : NavigationResult::Outcome::Stuck,
+                                  d.reason + " (" + std::to_string(res.stalls) + " stalls)");
                 m.sense(scenario, t, at.x, at.y, at.yaw, res);
                 break;
             default: break;  // interrupted: the path ahead is blocked in the working map (rolling or at a standstill)

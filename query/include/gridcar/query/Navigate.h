@@ -32,7 +32,7 @@ struct NavigationOptions
     /// Its startTime, startState, interrupt and interruptRolling are the navigator's
     FollowerParams follower;
     int maxReplans{30};             ///< replans before the run ends as Stuck
-    int maxStalls{3};               ///< drives ending stuck (each followed by a replan) before it ends as Stuck; retreats as many
+    int maxStalls{3};               ///< drives ending stuck or past their time limit (each followed by a replan) before it ends as Stuck (Timeout); retreats as many
     /// Replan while rolling: when the path ahead becomes blocked, plan at once from where the
     /// vehicle is while it rolls on along the old path for the plan's latency (up to a metre
     /// short of where that is blocked, or braking at once with less room), then drive on
@@ -58,7 +58,7 @@ struct NavigationResult
     /// Plans after the first (a plan made while rolling that the vehicle could not drive on into
     /// counts, and so does the one made once it has braked)
     int replans{0};
-    int stalls{0};                           ///< drives that ended stuck
+    int stalls{0};                           ///< drives that ended stuck or past their time limit, each planned again
     /// Times no plan started from where the vehicle stood and it backed up along its track
     /// (two vehicle lengths and a metre, as far as the working map is free) to plan again
     int retreats{0};
