@@ -1,6 +1,8 @@
 // A simulated range sensor and the working map of what it saw.
 #include "gridcar/sim/Sensing.h"
 
+#include "collision/detail/Polygon.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -38,48 +40,18 @@ void grow(CellWindow &w, int col, int row)
     w.row0 = std::min(w.row0, row), w.row1 = std::max(w.row1, row);
 }
 
-using Pt = std::array<double, 2>;
-
-/// The segment a-b meets the square of half side h round (cx, cy) (Liang-Barsky clipping).
-bool segmentMeetsSquare(const Pt &a, const Pt &b, double cx, double cy, double h)
-{
-    double t0 = 0.0, t1 = 1.0;
-    const double d[2] = {b[0] - a[0], b[1] - a[1]};
-    const double lo[2] = {cx - h - a[0], cy - h - a[1]}, hi[2] = {cx + h - a[0], cy + h - a[1]};
-    for (int k = 0; k < 2; ++k)
-    {
-        if (std::abs(d[k]) < 1e-15)
-        {
-            if (lo[k] > 0.0 || hi[k] < 0.0) return false;
-            continue;
-        }
-        double e0 = lo[k] / d[k], e1 = hi[k] / d[k];
-        if (e0 > e1) std::swap(e0, e1);
-        t0 = std::max(t0, e0), t1 = std::min(t1, e1);
-        if (t0 > t1) return false;
-    }
-    return true;
-}
-
-/// The polygon @p poly (closed, either orientation) and the square of half side h round
-/// (cx, cy) overlap: an edge meets the square, or the square's centre is inside the polygon.
-bool overlaps(const std::vector<Pt> &poly, double cx, double cy, double h)
-{
-    bool inside = false;
-    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
-    {
-        if (segmentMeetsSquare(poly[j], poly[i], cx, cy, h)) return true;
-        if ((poly[i][1] > cy) != (poly[j][1] > cy) &&
-            cx < poly[j][0] + (cy - poly[j][1]) * (poly[i][0] - poly[j][0]) / (poly[i][1] - poly[j][1]))
-            inside = !inside;
-    }
-    return inside;
-}
+using detail::Pt;
 }  // namespace
 
 void WorkingMap::clearUnder(const std::vector<Pt> &body, CellWindow &changed)
 {
     if (body.size() < 3 || sensed_.empty()) return;
+    // the outline counter-clockwise in triangles: a cell overlaps the body where it meets one
+    std::vector<Pt> ccw = body;
+    double area = 0.0;
+    for (std::size_t i = 0, j = ccw.size() - 1; i < ccw.size(); j = i++) area += ccw[j][0] * ccw[i][1] - ccw[i][0] * ccw[j][1];
+    if (area < 0) std::reverse(ccw.begin(), ccw.end());
+    const std::vector<detail::Tri> tris = detail::triangulate(std::move(ccw));
     OccupancyGrid &g = *grid_;
     double x0 = body[0][0], x1 = x0, y0 = body[0][1], y1 = y0;
     for (const Pt &p : body) x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
@@ -89,7 +61,10 @@ void WorkingMap::clearUnder(const std::vector<Pt> &body, CellWindow &changed)
         for (int col = std::max(0, a.col); col <= std::min(g.width() - 1, b.col); ++col)
         {
             const auto m = sensed_.find(g.index(col, row));
-            if (m == sensed_.end() || !overlaps(body, g.cellCenterX(col), g.cellCenterY(row), h)) continue;
+            if (m == sensed_.end()) continue;
+            const double cx = g.cellCenterX(col), cy = g.cellCenterY(row);
+            if (std::none_of(tris.begin(), tris.end(), [&](const detail::Tri &t) { return detail::triangleMeetsSquare(t, cx, cy, h); }))
+                continue;
             g.set(col, row, m->second);
             sensed_.erase(m);
             grow(changed, col, row);

@@ -52,7 +52,8 @@ public:
     /// FootprintChecker::cellsChanged().
     ///
     /// Footprint clearing (Nav2's obstacle layer, `footprint_clearing_enabled`): with @p body
-    /// (the vehicle's outline in world coordinates, as it stands), a cell the body overlaps is
+    /// (the vehicle's outline in world coordinates, as it stands: a simple polygon in either
+    /// orientation, std::invalid_argument where it cannot be triangulated), a cell the body overlaps is
     /// not marked, and a marked one is given back its state in the map: nothing can stand where
     /// the vehicle is, and a cell a scan marked for an obstacle beside the body, were it kept,
     /// would leave the vehicle's own pose in collision in the working map (no plan from it).
